@@ -1,0 +1,134 @@
+#include "app/Commands.h"
+
+#include "scenarios/ScenarioRun.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace rockroll::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::ordered_json toJson(const RunSummary& s) {
+    nlohmann::ordered_json j;
+    j["model"] = s.model;
+    j["car"] = s.car;
+    j["speed_mph"] = s.speedMph;
+    j["amplitude_in"] = s.amplitudeIn;
+    j["duration_s"] = s.durationS;
+    j["max_roll_deg"] = s.maxRollDeg;
+    j["steady_roll_amplitude_deg"] = s.steadyRollAmplitudeDeg;
+    j["max_wheel_lift_in"] = s.maxWheelLiftIn;
+    j["max_wheel_load_lb"] = s.maxWheelLoadLb;
+    j["min_wheel_load_ratio"] = s.minWheelLoadRatio;
+    j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
+    j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
+    j["raw_max_wheel_load_lb"] = s.rawMaxWheelLoadLb;
+    j["raw_min_wheel_load_ratio"] = s.rawMinWheelLoadRatio;
+    j["raw_max_side_bearing_load_lb"] = s.rawMaxSideBearingLoadLb;
+    j["raw_max_center_plate_load_lb"] = s.rawMaxCenterPlateLoadLb;
+    j["static_wheel_load_lb"] = s.staticWheelLoadLb;
+    j["static_center_plate_load_lb"] = s.staticCenterPlateLoadLb;
+    j["regime"] = s.regime;
+    j["filter"] = s.filter;
+    j["sim_time_s"] = s.simTimeS;
+    j["wall_time_s"] = s.wallTimeS;
+    j["steps"] = s.steps;
+    return j;
+}
+
+/// Writes through a temporary name and renames when complete, so a reader never
+/// sees a half-written file.
+void writeAtomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+    const fs::path tmp = path.string() + ".tmp";
+    {
+        std::ofstream out(tmp);
+        if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
+        write(out);
+        out.flush();
+        if (!out) throw std::runtime_error(fmt::format("error while writing {}", tmp.string()));
+    }
+    fs::rename(tmp, path);
+}
+
+void writeHistoryCsv(std::ostream& out, const TimeHistory& h) {
+    for (size_t i = 0; i < h.names.size(); ++i) out << (i ? "," : "") << h.names[i];
+    out << '\n';
+    for (const auto& row : h.samples) {
+        for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << fmt::format("{:.7g}", row[i]);
+        out << '\n';
+    }
+}
+
+void printSummary(const RunSummary& s, const Scenario& sc) {
+    fmt::print("rockroll — {} model, {} car, {:.2f} in cross-level, {:.1f} mph, {:g} s simulated\n", s.model, s.car,
+               s.amplitudeIn, s.speedMph, s.durationS);
+    fmt::print("  scenario: {}\n", sc.source);
+    fmt::print("  regime: {}\n", s.regime);
+    fmt::print("  max roll                         {:9.2f} deg   (steady amplitude {:.2f} deg)\n", s.maxRollDeg,
+               s.steadyRollAmplitudeDeg);
+    fmt::print("  max wheel lift                   {:9.2f} in\n", s.maxWheelLiftIn);
+    fmt::print("  max wheel load (2 wheels, 1 side){:9.0f} lb    (raw {:.0f}, static {:.0f})\n", s.maxWheelLoadLb,
+               s.rawMaxWheelLoadLb, s.staticWheelLoadLb);
+    fmt::print("  min single-wheel load ratio      {:9.3f}       (raw {:.3f})\n", s.minWheelLoadRatio,
+               s.rawMinWheelLoadRatio);
+    fmt::print("  max side-bearing load            {:9.0f} lb    (raw {:.0f})\n", s.maxSideBearingLoadLb,
+               s.rawMaxSideBearingLoadLb);
+    fmt::print("  max center-plate load            {:9.0f} lb    (raw {:.0f}, static {:.0f})\n",
+               s.maxCenterPlateLoadLb, s.rawMaxCenterPlateLoadLb, s.staticCenterPlateLoadLb);
+    fmt::print("  force maxima filtered: {}\n", s.filter);
+    fmt::print("  {} integrator steps, {:.1f} s simulated in {:.2f} s wall ({:.1f}x real time)\n", s.steps,
+               s.simTimeS, s.wallTimeS, s.simTimeS / s.wallTimeS);
+}
+
+}  // namespace
+
+int runDefaultCase() {
+    const Scenario sc = getDefaultScenario();
+    const ScenarioRun run = runScenario(sc);
+    const RunSummary& s = run.summary;
+    printSummary(s, sc);
+    fmt::print("\nBeside the 1976 report (its §3.1, Figs 8–10: 70-ton loaded, 0.75 in, 16.5 mph):\n");
+    fmt::print("  {:<36}{:>14}{:>18}\n", "quantity", "rockroll", "report");
+    fmt::print("  {:<36}{:>14}{:>18}\n", "regime", s.regime, "severe");
+    fmt::print("  {:<36}{:>11.0f} lb{:>18}\n", "max side-bearing force", s.maxSideBearingLoadLb, "up to 90,000 lb");
+    fmt::print("  {:<36}{:>11.2f} in{:>18}\n", "max wheel lift", s.maxWheelLiftIn, "approaching 2 in");
+    fmt::print("  {:<36}{:>11.0f} lb{:>18}\n", "max wheel force (2 wheels, 1 side)", s.maxWheelLoadLb,
+               "about 100,000 lb");
+    fmt::print("  {:<36}{:>14.2f}{:>18}\n", "max wheel force / static", s.maxWheelLoadLb / s.staticWheelLoadLb,
+               "almost 2");
+    fmt::print("(no parameter was tuned to these numbers; see docs/model.md)\n");
+    return 0;
+}
+
+int runCommand(const RunOptions& o) {
+    Scenario sc = loadScenarioFile(o.scenario);
+    if (o.model) sc.model = *o.model;
+    if (o.speedMph) sc.speed = *o.speedMph * units::mph;
+    if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
+    if (o.durationS) sc.run.duration = *o.durationS;
+    const ScenarioRun run = runScenario(sc);
+
+    const fs::path dir = o.outDir.empty()
+                             ? fs::path("out") / fmt::format("{}-{}", fs::path(o.scenario).stem().string(), sc.model)
+                             : fs::path(o.outDir);
+    fs::create_directories(dir);
+    const nlohmann::ordered_json j = toJson(run.summary);
+    writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
+    writeAtomically(dir / "summary.json", [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+
+    if (o.json) {
+        fmt::print("{}\n", j.dump());
+    } else {
+        printSummary(run.summary, sc);
+        fmt::print("  wrote {} and {}\n", (dir / "history.csv").string(), (dir / "summary.json").string());
+    }
+    return 0;
+}
+
+}  // namespace rockroll::app

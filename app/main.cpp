@@ -1,0 +1,41 @@
+// rockroll: freight-car rock-and-roll simulator (command line).
+#include "app/Commands.h"
+#include "mbmodel/Simulation.h"
+#include "scenarios/ScenarioLoader.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+int main(int argc, char** argv) {
+    using namespace rockroll;
+    CLI::App cli{"rockroll — freight-car rock and roll on staggered jointed track (Simbody models).\n"
+                 "With no sub-command: the default case, 70-ton loaded car, 0.75 in, 16.5 mph, full car, 20 s."};
+    cli.require_subcommand(0, 1);
+
+    app::RunOptions run;
+    CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
+    runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
+    runCmd->add_option("--model", run.model, "halfcar | fullcar (overrides the scenario)")
+        ->check(CLI::IsMember({"halfcar", "fullcar"}));
+    runCmd->add_option("--speed-mph", run.speedMph, "speed [mph]")->check(CLI::PositiveNumber);
+    runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
+        ->check(CLI::NonNegativeNumber);
+    runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(CLI::PositiveNumber);
+    runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
+    runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
+
+    CLI11_PARSE(cli, argc, argv);
+    try {
+        if (runCmd->parsed()) return app::runCommand(run);
+        return app::runDefaultCase();
+    } catch (const ScenarioError& e) {
+        fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());
+        return 2;
+    } catch (const NumericalFailure& e) {
+        fmt::print(stderr, "rockroll: numerical failure: {}\n", e.what());
+        return 3;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "rockroll: error: {}\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,37 @@
+#include "contacts/BristleFriction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rockroll {
+
+namespace {
+double smoothstep(double x) {
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3 - 2 * x);
+}
+}  // namespace
+
+BristleFrictionState calcBristleFriction(double w, double v, const BristleFrictionLaw& law) {
+    BristleFrictionState out;
+    if (law.limit <= 0) {
+        // No normal load: the bristle relaxes and carries nothing.
+        out.deflectionRate = -w / law.relaxationTime;
+        out.slipping = true;
+        return out;
+    }
+    const double wMax = law.limit / law.stiffness;
+    const double ratio = std::abs(w) / wMax;
+    double alpha = 0;
+    if (v * w > 0)
+        alpha = ratio >= 1 ? 1.0 : smoothstep((ratio - law.presliding) / (1 - law.presliding));
+    double wDot = v * (1 - alpha);
+    if (ratio > 1) wDot -= (w - std::copysign(wMax, w)) / law.relaxationTime;
+    const double f = std::clamp(law.stiffness * w + law.damping * wDot, -law.limit, law.limit);
+    out.force = -f;
+    out.deflectionRate = wDot;
+    out.slipping = alpha > 0.5 || ratio >= 1;
+    return out;
+}
+
+}  // namespace rockroll

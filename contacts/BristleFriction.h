@@ -1,0 +1,38 @@
+#pragma once
+// Elasto-plastic ("bristle") Coulomb friction law: a stiff spring in series with
+// a slider whose anchor is state. Used by the friction wedges and the center
+// plate's yaw friction. It sticks for real: under a steady force below the limit
+// the bristle deflection w stops changing, so nothing creeps.
+
+namespace rockroll {
+
+struct BristleFrictionLaw {
+    double limit = 0;      ///< Coulomb force (or torque) F_c ≥ 0
+    double stiffness = 0;  ///< bristle stiffness k_b > 0
+    double damping = 0;    ///< bristle damping c_b ≥ 0
+    /// Fraction of the limit deflection where slip starts to blend in (β).
+    double presliding = 0.95;
+    /// Time constant that pulls an overstretched bristle (limit dropped) back [s].
+    double relaxationTime = 0.002;
+};
+
+struct BristleFrictionState {
+    double force = 0;          ///< friction force F acting on the sliding body, opposing v
+    double deflectionRate = 0; ///< ẇ
+    bool slipping = false;
+};
+
+/// Bristle deflection w (state) and relative sliding velocity v:
+///
+///     w_max = F_c / k_b
+///     α(w,v) = 0                            if v·w ≤ 0 (unloading: sticks)
+///            = smoothstep((|w|/w_max − β)/(1 − β))   otherwise, 1 for |w| ≥ w_max
+///     ẇ = v·(1 − α) − (w − sign(w)·w_max)/τ · [|w| > w_max]
+///     F = −clamp(k_b·w + c_b·ẇ, −F_c, F_c)
+///
+/// In stick (α = 0) ẇ = v, the bristle is a spring; at the limit (α = 1) ẇ = 0
+/// and the force is ±F_c while the surfaces slide.
+BristleFrictionState calcBristleFriction(double deflection, double slidingVelocity,
+                                         const BristleFrictionLaw& law);
+
+}  // namespace rockroll

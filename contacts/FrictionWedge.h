@@ -1,0 +1,39 @@
+#pragma once
+// Friction wedge at one bolster end: Coulomb friction of constant magnitude,
+// vertical and lateral, between bolster and side frame (report eqs 8–10).
+// Each direction is an elasto-plastic bristle (BristleFriction.h) whose
+// deflection is a continuous state of the force subsystem, so the wedge sticks.
+#include "contacts/BristleFriction.h"
+#include "contacts/SuspensionLink.h"
+
+namespace rockroll {
+
+class FrictionWedge : public SimTK::Force::Custom::Implementation {
+public:
+    enum Direction { Vertical = 0, Lateral = 1 };
+
+    FrictionWedge(const SimTK::GeneralForceSubsystem& forces, SuspensionLink link,
+                  BristleFrictionLaw vertical, BristleFrictionLaw lateral)
+        : forces_(forces), link_(std::move(link)), law_{vertical, lateral} {}
+
+    /// Friction force on the bolster along ground z (Vertical) or y (Lateral).
+    BristleFrictionState calcFriction(const SimTK::State& s, Direction d) const;
+    double getDeflection(const SimTK::State& s, Direction d) const;
+    void setDeflection(SimTK::State& s, Direction d, double w) const;
+
+    void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
+                   SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
+    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+    void realizeTopology(SimTK::State& s) const override;
+    void realizeAcceleration(const SimTK::State& s) const override;
+
+private:
+    const SimTK::GeneralForceSubsystem& forces_;
+    SuspensionLink link_;
+    BristleFrictionLaw law_[2];
+    // Topology-stage index of the two bristle states, as Simbody's own elements keep it.
+    mutable SimTK::ZIndex z0_;
+};
+
+}  // namespace rockroll

@@ -1,0 +1,32 @@
+#include "contacts/LateralSpringGroup.h"
+
+#include <cmath>
+
+using namespace SimTK;
+
+namespace rockroll {
+
+double calcLateralSpringForce(double Y, double Ydot, const LateralSpringLaw& law) {
+    const double sgn = Y >= 0 ? 1.0 : -1.0;
+    const double gib = calcUnilateralNormalForce(std::abs(Y) - law.gibClearance, sgn * Ydot,
+                                                 {law.gibRate, law.gibDissipation});
+    return law.rate * Y + sgn * gib;
+}
+
+double LateralSpringGroup::calcForce(const State& s) const {
+    return calcLateralSpringForce(calcDisplacement(s), link_.calcRelativeVelocity(s)[1], law_);
+}
+
+void LateralSpringGroup::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
+                                   Vector_<Vec3>&, Vector&) const {
+    const double P = calcForce(s);
+    link_.applyForceOnBolster(s, Vec3(0, -P, 0), bodyForces);
+}
+
+Real LateralSpringGroup::calcPotentialEnergy(const State& s) const {
+    const double Y = calcDisplacement(s);
+    const double e = std::max(0.0, std::abs(Y) - law_.gibClearance);
+    return 0.5 * law_.rate * Y * Y + 0.5 * law_.gibRate * e * e;
+}
+
+}  // namespace rockroll

@@ -1,0 +1,35 @@
+#include "contacts/UnilateralContact.h"
+
+#include <algorithm>
+
+using namespace SimTK;
+
+namespace rockroll {
+
+double calcUnilateralNormalForce(double penetration, double penetrationRate,
+                                 const UnilateralContactLaw& law) {
+    if (penetration <= 0) return 0;
+    const double f = law.stiffness * penetration * (1 + law.dissipation * penetrationRate);
+    return std::max(0.0, f);
+}
+
+double VerticalPointPair::calcPenetration(const State& s) const {
+    const Vec3 p_GU = upper.findStationLocationInGround(s, p_UpperPoint);
+    const Vec3 p_GL = lower.findStationLocationInGround(s, p_LowerPoint);
+    return p_GL[2] - p_GU[2] - clearance;
+}
+
+double VerticalPointPair::calcPenetrationRate(const State& s) const {
+    const Vec3 v_GU = upper.findStationVelocityInGround(s, p_UpperPoint);
+    const Vec3 v_GL = lower.findStationVelocityInGround(s, p_LowerPoint);
+    return v_GL[2] - v_GU[2];
+}
+
+void VerticalPointPair::applyNormalForce(const State& s, double f,
+                                         Vector_<SpatialVec>& bodyForces) const {
+    if (f == 0) return;
+    upper.applyForceToBodyPoint(s, p_UpperPoint, Vec3(0, 0, f), bodyForces);
+    lower.applyForceToBodyPoint(s, p_LowerPoint, Vec3(0, 0, -f), bodyForces);
+}
+
+}  // namespace rockroll

@@ -1,0 +1,21 @@
+#pragma once
+// Half-car model (report §2.2, Fig. 2): the planar section through the leading
+// truck. Bodies, each with lateral, vertical and roll motion:
+//   car body  — half the car body mass and half its roll inertia,
+//   bolster,
+//   equivalent wheelset — both wheelsets and side frames of the truck, whose
+//   rail input is the mean over the two axles (report eqs 6–7).
+#include "mbmodel/RockingModel.h"
+
+namespace rockroll {
+
+class HalfCarModel : public RockingModel {
+public:
+    HalfCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
+    std::string getName() const override { return "halfcar"; }
+
+protected:
+    void setCarBodyHeight(SimTK::State& s, double z) const override;
+};
+
+}  // namespace rockroll

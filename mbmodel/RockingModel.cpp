@@ -1,0 +1,100 @@
+#include "mbmodel/RockingModel.h"
+
+#include "mbmodel/FullCarModel.h"
+#include "mbmodel/HalfCarModel.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+using SimTK::State; using SimTK::Vec3; using SimTK::Vector; using SimTK::MobilizedBody; using SimTK::Transform;
+using SimTK::Rotation; using SimTK::Mat33; using SimTK::Body; using SimTK::MassProperties; using SimTK::Inertia;
+using SimTK::Stage; using SimTK::Force; using SimTK::SimbodyMatterSubsystem; using SimTK::GeneralForceSubsystem;
+using SimTK::System; using SimTK::Integrator;
+
+namespace rockroll {
+
+RockingModel::RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options)
+    : car_(car), track_(track), options_(options), matter_(system_), forces_(system_) {
+    Force::UniformGravity(forces_, matter_, Vec3(0, 0, -units::g));
+}
+
+void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec3>& p_CarBodyPlates) {
+    for (size_t i = 0; i < specs.size(); ++i)
+        trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBody_, p_CarBodyPlates[i], car_,
+                                                  std::move(specs[i])));
+    system_.realizeTopology();
+    State s = makeStaticState();
+    staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];
+    declareChannels();
+}
+
+RailInputFunction RockingModel::makeRailInput(std::vector<double> trackOffsets) const {
+    // trackOffsets: s_i(0), where the axles are on the track at t = 0.
+    const double V = options_.speed;
+    return [this, V, offsets = std::move(trackOffsets)](double t) {
+        RailHeights h;
+        const double w = 1.0 / double(offsets.size());
+        for (double s0 : offsets) {
+            const RailPoint p = track_.calcRails(V * t + s0);
+            for (int i = 0; i < 2; ++i) {
+                h.z[i] += w * p.z[i];
+                h.zDot[i] += w * p.slope[i] * V;
+            }
+        }
+        return h;
+    };
+}
+
+State RockingModel::makeStaticState() const {
+    State s = system_.getDefaultState();
+    s.setTime(0);
+    double plateZ = 0;
+    for (const auto& truck : trucks_) plateZ += truck->setStaticState(s) / double(trucks_.size());
+    setCarBodyHeight(s, plateZ + car_.cgAboveCenterPlate);
+    for (const auto& truck : trucks_)
+        for (int i = 0; i < truck->getNumWheelsets(); ++i) {
+            const RailHeights r = truck->getWheelRail(i).getRailHeights(0);
+            if (std::abs(r.z[0]) > 1e-12 || std::abs(r.z[1]) > 1e-12)
+                throw std::invalid_argument(
+                    "the rails under every wheelset must be level at t = 0 (static equilibrium is "
+                    "placed on level track); use a level lead-in");
+        }
+    system_.realize(s, Stage::Velocity);
+    return s;
+}
+
+void RockingModel::declareChannels() {
+    channels_.roll = channels_.add("roll_deg");
+    channels_.add("pitch_deg");
+    channels_.add("yaw_deg");
+    channels_.add("car_body_vertical_in");
+    channels_.add("car_body_lateral_in");
+    for (const auto& truck : trucks_) truck->declareChannels(channels_);
+}
+
+void RockingModel::calcChannels(const State& s, std::vector<double>& out) const {
+    out.resize(channels_.names.size());
+    const Vec3 angles = carBody_.getBodyRotation(s).convertRotationToBodyFixedXYZ();
+    const Vec3 p = carBody_.getBodyOriginLocation(s);
+    double* o = out.data();
+    *o++ = angles[0] / units::degree;
+    *o++ = angles[1] / units::degree;
+    *o++ = angles[2] / units::degree;
+    *o++ = (p[2] - staticCarBodyHeight_) / units::inch;
+    *o++ = p[1] / units::inch;
+    for (const auto& truck : trucks_) o = truck->calcChannels(s, o);
+}
+
+double RockingModel::calcMechanicalEnergy(const State& s) const {
+    system_.realize(s, Stage::Dynamics);
+    return system_.calcEnergy(s);
+}
+
+std::unique_ptr<RockingModel> makeRockingModel(const std::string& model, const CarParameters& car,
+                                               const TrackInput& track, ModelOptions options) {
+    if (model == "halfcar") return std::make_unique<HalfCarModel>(car, track, options);
+    if (model == "fullcar") return std::make_unique<FullCarModel>(car, track, options);
+    throw std::invalid_argument(fmt::format("unknown model \"{}\"; expected halfcar or fullcar", model));
+}
+
+}  // namespace rockroll

@@ -1,0 +1,77 @@
+#pragma once
+// Common base of the Simbody rocking models: the multibody system, the car body,
+// its trucks, static equilibrium and the recorded channels.
+#include "mbmodel/CarParameters.h"
+#include "mbmodel/ChannelLayout.h"
+#include "mbmodel/TrackInput.h"
+#include "mbmodel/Truck.h"
+
+#include <Simbody.h>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+/// Where the track perturbation starts relative to the car.
+enum class TrackEntry {
+    Lead,          ///< the leading wheelset enters at t = 0; the rear truck later (real track)
+    Synchronized,  ///< every truck's leading wheelset enters at t = 0 (same phase at both trucks)
+};
+
+struct ModelOptions {
+    double speed = 0;                     ///< [m/s]
+    TrackEntry entry = TrackEntry::Lead;
+};
+
+class RockingModel {
+public:
+    virtual ~RockingModel() = default;
+    RockingModel(const RockingModel&) = delete;
+    RockingModel& operator=(const RockingModel&) = delete;
+
+    virtual std::string getName() const = 0;
+    const SimTK::MultibodySystem& getSystem() const { return system_; }
+    const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+    const CarParameters& getCar() const { return car_; }
+    const Truck& getTruck(int i) const { return *trucks_[i]; }
+    int getNumTrucks() const { return int(trucks_.size()); }
+    const SimTK::MobilizedBody& getCarBody() const { return carBody_; }
+
+    /// State at t = 0 with every body in static equilibrium on level rails and
+    /// every friction wedge unloaded.
+    SimTK::State makeStaticState() const;
+
+    const ChannelLayout& getChannels() const { return channels_; }
+    /// One sample of every channel (no time column).
+    void calcChannels(const SimTK::State& s, std::vector<double>& out) const;
+
+    /// Total mechanical energy of the bodies and conservative elements [J].
+    double calcMechanicalEnergy(const SimTK::State& s) const;
+
+protected:
+    RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
+    /// Called by derived constructors once the car body exists.
+    void addTrucks(std::vector<TruckSpec> specs, const std::vector<SimTK::Vec3>& p_CarBodyPlates);
+    virtual void setCarBodyHeight(SimTK::State& s, double z) const = 0;
+    /// Rail input at a wheelset, averaging over the listed axle offsets.
+    RailInputFunction makeRailInput(std::vector<double> trackOffsets) const;
+    void declareChannels();
+
+    const CarParameters car_;
+    const TrackInput track_;
+    const ModelOptions options_;
+    SimTK::MultibodySystem system_;
+    SimTK::SimbodyMatterSubsystem matter_;
+    SimTK::GeneralForceSubsystem forces_;
+    SimTK::MobilizedBody carBody_;
+    std::vector<std::unique_ptr<Truck>> trucks_;
+    ChannelLayout channels_;
+    double staticCarBodyHeight_ = 0;  // z of the CG at rest [m]
+};
+
+/// Builds "halfcar" or "fullcar".
+std::unique_ptr<RockingModel> makeRockingModel(const std::string& model, const CarParameters& car,
+                                               const TrackInput& track, ModelOptions options);
+
+}  // namespace rockroll

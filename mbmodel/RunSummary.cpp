@@ -1,0 +1,91 @@
+#include "mbmodel/RunSummary.h"
+
+#include "mbmodel/LowPassFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rockroll {
+
+namespace {
+std::vector<double> getColumn(const TimeHistory& h, int channel) {
+    std::vector<double> c;
+    c.reserve(h.samples.size());
+    for (const auto& row : h.samples) c.push_back(row[channel + 1]);
+    return c;
+}
+
+double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
+double minOf(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+struct Extremes {
+    double filteredMax = -std::numeric_limits<double>::infinity();
+    double rawMax = -std::numeric_limits<double>::infinity();
+};
+
+Extremes maxOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f) {
+    Extremes e;
+    for (int c : channels) {
+        const auto x = getColumn(h, c);
+        e.rawMax = std::max(e.rawMax, maxOf(x));
+        e.filteredMax = std::max(e.filteredMax, maxOf(f.apply(x)));
+    }
+    return e;
+}
+}  // namespace
+
+RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const SummaryOptions& opt) {
+    const TimeHistory& h = run.history;
+    if (h.samples.size() < 4) throw std::invalid_argument("run too short to summarise");
+    RunSummary r;
+    const double dt = h.samples[1][0] - h.samples[0][0];
+    const LowPassFilter filter(opt.filterCutoffHz, 1 / dt);
+    r.filter = filter.getDescription();
+
+    const auto roll = getColumn(h, layout.roll);
+    r.maxRollDeg = std::max(std::abs(maxOf(roll)), std::abs(minOf(roll)));
+    const double tEnd = h.samples.back()[0];
+    const double window = std::min(opt.steadyCycles * opt.forcingPeriod, tEnd / 2);
+    double hi = -1e300, lo = 1e300;
+    for (size_t i = 0; i < roll.size(); ++i)
+        if (h.samples[i][0] >= tEnd - window) {
+            hi = std::max(hi, roll[i]);
+            lo = std::min(lo, roll[i]);
+        }
+    r.steadyRollAmplitudeDeg = (hi - lo) / 2;
+
+    for (int c : layout.wheelLift) r.maxWheelLiftIn = std::max(r.maxWheelLiftIn, maxOf(getColumn(h, c)));
+
+    const Extremes wheels = maxOverChannels(h, layout.truckSideWheelLoad, filter);
+    r.maxWheelLoadLb = wheels.filteredMax;
+    r.rawMaxWheelLoadLb = wheels.rawMax;
+    const Extremes sb = maxOverChannels(h, layout.sideBearing, filter);
+    r.maxSideBearingLoadLb = sb.filteredMax;
+    r.rawMaxSideBearingLoadLb = sb.rawMax;
+    const Extremes cp = maxOverChannels(h, layout.centerPlate, filter);
+    r.maxCenterPlateLoadLb = cp.filteredMax;
+    r.rawMaxCenterPlateLoadLb = cp.rawMax;
+
+    r.minWheelLoadRatio = r.rawMinWheelLoadRatio = std::numeric_limits<double>::infinity();
+    for (int c : layout.singleWheelLoad) {
+        const auto x = getColumn(h, c);
+        const double staticLoad = x.front();
+        r.rawMinWheelLoadRatio = std::min(r.rawMinWheelLoadRatio, minOf(x) / staticLoad);
+        r.minWheelLoadRatio = std::min(r.minWheelLoadRatio, minOf(filter.apply(x)) / staticLoad);
+    }
+    r.staticWheelLoadLb = h.samples[0][layout.truckSideWheelLoad.front() + 1];
+    r.staticCenterPlateLoadLb = h.samples[0][layout.centerPlate.front() + 1];
+
+    bool sideBearingContact = sb.rawMax > 0;
+    double minPlate = std::numeric_limits<double>::infinity();
+    for (int c : layout.centerPlate) minPlate = std::min(minPlate, minOf(getColumn(h, c)));
+    r.regime = minPlate <= 0 ? "severe" : sideBearingContact ? "moderate" : "light";
+
+    r.simTimeS = run.simTime;
+    r.wallTimeS = run.wallTime;
+    r.steps = run.steps;
+    return r;
+}
+
+}  // namespace rockroll

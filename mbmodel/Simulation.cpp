@@ -1,0 +1,115 @@
+#include "mbmodel/Simulation.h"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <memory>
+
+using SimTK::State; using SimTK::Vec3; using SimTK::Vector; using SimTK::MobilizedBody; using SimTK::Transform;
+using SimTK::Rotation; using SimTK::Mat33; using SimTK::Body; using SimTK::MassProperties; using SimTK::Inertia;
+using SimTK::Stage; using SimTK::Force; using SimTK::SimbodyMatterSubsystem; using SimTK::GeneralForceSubsystem;
+using SimTK::System; using SimTK::Integrator; using SimTK::CPodesIntegrator; using SimTK::CPodes;
+using SimTK::RungeKuttaMersonIntegrator; using SimTK::RungeKutta3Integrator; using SimTK::RungeKuttaFeldbergIntegrator;
+using SimTK::VerletIntegrator; using SimTK::MobilizedBodyIndex;
+
+namespace rockroll {
+
+int TimeHistory::column(const std::string& name) const {
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return int(i);
+    throw std::out_of_range("no channel " + name);
+}
+
+std::vector<std::string> getIntegratorNames() { return {"cpodes", "rkmerson", "rk3", "rkf", "verlet"}; }
+
+namespace {
+std::unique_ptr<Integrator> makeIntegrator(const System& sys, const IntegratorSettings& s) {
+    std::unique_ptr<Integrator> integ;
+    if (s.method == "cpodes") integ = std::make_unique<CPodesIntegrator>(sys, CPodes::BDF, CPodes::Newton);
+    else if (s.method == "rkmerson") integ = std::make_unique<RungeKuttaMersonIntegrator>(sys);
+    else if (s.method == "rk3") integ = std::make_unique<RungeKutta3Integrator>(sys);
+    else if (s.method == "rkf") integ = std::make_unique<RungeKuttaFeldbergIntegrator>(sys);
+    else if (s.method == "verlet") integ = std::make_unique<VerletIntegrator>(sys);
+    else
+        throw std::invalid_argument(fmt::format("unknown integrator \"{}\"; expected one of: cpodes, rkmerson, "
+                                                "rk3, rkf, verlet", s.method));
+    if (!(s.accuracy > 0 && s.accuracy < 1))
+        throw std::invalid_argument(fmt::format("integrator accuracy {} must be in (0, 1)", s.accuracy));
+    integ->setAccuracy(s.accuracy);
+    if (s.maxStepSize > 0) integ->setMaximumStepSize(s.maxStepSize);
+    integ->setReturnEveryInternalStep(false);
+    return integ;
+}
+
+std::string describeState(const RockingModel& model, const State& s) {
+    std::string out = fmt::format("t = {:.6f} s\n", s.getTime());
+    for (int b = 1; b < model.getMatter().getNumBodies(); ++b) {
+        const MobilizedBody& mb = model.getMatter().getMobilizedBody(MobilizedBodyIndex(b));
+        out += fmt::format("  body {}: q = [", b);
+        for (int i = 0; i < mb.getNumQ(s); ++i) out += fmt::format("{}{:.6g}", i ? ", " : "", mb.getOneQ(s, i));
+        out += "], u = [";
+        for (int i = 0; i < mb.getNumU(s); ++i) out += fmt::format("{}{:.6g}", i ? ", " : "", mb.getOneU(s, i));
+        out += "]\n";
+    }
+    out += "  z (friction bristles) = [";
+    for (int i = 0; i < s.getNZ(); ++i) out += fmt::format("{}{:.6g}", i ? ", " : "", s.getZ()[i]);
+    return out + "]";
+}
+}  // namespace
+
+RunResult simulate(const RockingModel& model, const RunSettings& settings) {
+    if (!(settings.duration > 0)) throw std::invalid_argument("run duration must be positive");
+    if (!(settings.outputRate > 0)) throw std::invalid_argument("output rate must be positive");
+    const auto wall0 = std::chrono::steady_clock::now();
+    RunResult result;
+    result.history.names.push_back("t_s");
+    for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
+
+    auto integ = makeIntegrator(model.getSystem(), settings.integrator);
+    State s0 = model.makeStaticState();
+    integ->initialize(s0);
+
+    std::vector<double> channels;
+    auto record = [&](const State& s) {
+        model.getSystem().realize(s, Stage::Acceleration);
+        model.calcChannels(s, channels);
+        std::vector<double> row{s.getTime()};
+        row.insert(row.end(), channels.begin(), channels.end());
+        result.history.samples.push_back(std::move(row));
+    };
+    record(integ->getState());
+
+    const long nOut = std::lround(settings.duration * settings.outputRate);
+    for (long k = 1; k <= nOut; ++k) {
+        const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
+        try {
+            integ->stepTo(tOut);
+        } catch (const std::exception& e) {
+            throw NumericalFailure(fmt::format("integration failed ({}) near t = {:.6f} s: {}\nlast good state:\n{}",
+                                               settings.integrator.method, integ->getTime(), e.what(),
+                                               describeState(model, integ->getState())),
+                                   integ->getTime());
+        }
+        if (integ->isSimulationOver() &&
+            integ->getTerminationReason() != Integrator::ReachedFinalTime &&
+            integ->getTime() < tOut - 1e-12)
+            throw NumericalFailure(fmt::format("integration stopped ({}) at t = {:.6f} s: {}\nstate:\n{}",
+                                               settings.integrator.method, integ->getTime(),
+                                               Integrator::getTerminationReasonString(integ->getTerminationReason()),
+                                               describeState(model, integ->getState())),
+                                   integ->getTime());
+        const State& s = integ->getState();
+        for (int i = 0; i < s.getNY(); ++i)
+            if (!std::isfinite(s.getY()[i]))
+                throw NumericalFailure(fmt::format("state became non-finite at t = {:.6f} s:\n{}", s.getTime(),
+                                                   describeState(model, s)),
+                                       s.getTime());
+        record(s);
+    }
+    result.steps = integ->getNumStepsTaken();
+    result.simTime = integ->getTime();
+    result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    return result;
+}
+
+}  // namespace rockroll

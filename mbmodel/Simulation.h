@@ -1,0 +1,52 @@
+#pragma once
+// The simulation driver shared by every Simbody model: integrator choice and
+// accuracy, fixed-rate recording, and failure reports with time and state.
+#include "mbmodel/RockingModel.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+struct IntegratorSettings {
+    std::string method = "cpodes";  ///< cpodes | rkmerson | rk3 | rkf | verlet
+    double accuracy = 1e-4;
+    double maxStepSize = 0;         ///< 0 = integrator's default [s]
+};
+
+struct RunSettings {
+    double duration = 20;           ///< [s]
+    double outputRate = 500;        ///< samples per second [Hz]
+    IntegratorSettings integrator;
+};
+
+struct TimeHistory {
+    std::vector<std::string> names;            ///< "t_s" then the model's channels
+    std::vector<std::vector<double>> samples;  ///< one row per output time
+    int column(const std::string& name) const;
+};
+
+struct RunResult {
+    TimeHistory history;
+    long steps = 0;
+    double simTime = 0;   ///< [s]
+    double wallTime = 0;  ///< [s]
+};
+
+/// Thrown when integration fails; what() names the time and the state.
+class NumericalFailure : public std::runtime_error {
+public:
+    NumericalFailure(const std::string& what, double time) : std::runtime_error(what), time_(time) {}
+    double getTime() const { return time_; }
+
+private:
+    double time_;
+};
+
+std::vector<std::string> getIntegratorNames();
+
+/// Runs `model` from its static state for settings.duration.
+RunResult simulate(const RockingModel& model, const RunSettings& settings);
+
+}  // namespace rockroll

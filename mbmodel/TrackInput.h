@@ -1,0 +1,54 @@
+#pragma once
+// Track vertical input: rail-top heights against track position (brief §5).
+//
+// Staggered rectified sine (report eqs 1–2), started at the phase where both
+// rails are equal so the rails are continuous (only their slope kinks):
+//
+//     σ = s + L_r/4,   z_R(s) = A·|sin(πσ/L_r)| − A/√2,   z_L(s) = A·|sin(πσ/L_r + π/2)| − A/√2
+//
+// for 0 ≤ s ≤ N·L_r (N = 0: no end), and level (0) outside. Alternatively a
+// table of measured cross-level c(s) (right minus left), optionally with a mean
+// profile p(s): z_R = p + c/2, z_L = p − c/2, linearly interpolated, level
+// outside the table.
+#include <array>
+#include <vector>
+
+namespace rockroll {
+
+struct RailPoint {
+    std::array<double, 2> z{0, 0};      ///< left, right rail-top heights [m]
+    std::array<double, 2> slope{0, 0};  ///< dz/ds [-]
+};
+
+struct MeasuredTrackSample {
+    double distance = 0;    ///< s [m]
+    double crossLevel = 0;  ///< right − left [m]
+    double profile = 0;     ///< mean rail height [m]
+};
+
+struct TrackSpec {
+    double amplitude = 0;            ///< A [m]
+    double railLength = 39 * 0.3048; ///< L_r [m]
+    int rails = 0;                   ///< N rail lengths of perturbation; 0 = unlimited
+    bool mirror = false;             ///< swap left and right rails
+    std::vector<MeasuredTrackSample> measured;  ///< replaces the rectified sine if not empty
+};
+
+class TrackInput {
+public:
+    explicit TrackInput(TrackSpec spec);
+    RailPoint calcRails(double s) const;
+    /// Cross-level z_R − z_L at s [m].
+    double calcCrossLevel(double s) const {
+        const RailPoint p = calcRails(s);
+        return p.z[1] - p.z[0];
+    }
+    const TrackSpec& getSpec() const { return spec_; }
+
+private:
+    RailPoint calcRectifiedSine(double s) const;
+    RailPoint calcMeasured(double s) const;
+    TrackSpec spec_;
+};
+
+}  // namespace rockroll

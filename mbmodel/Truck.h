@@ -1,0 +1,85 @@
+#pragma once
+// A three-piece truck as a subsystem template: it owns the topology (bolster,
+// wheelsets with their side-frame shares, and every force element between them
+// and the car body). Concrete cars supply data only (CarParameters, TruckSpec).
+// Left and right elements are built from one definition mirrored by side sign.
+#include "contacts/CenterPlateContact.h"
+#include "contacts/FrictionWedge.h"
+#include "contacts/LateralSpringGroup.h"
+#include "contacts/SideBearing.h"
+#include "contacts/VerticalSpringGroup.h"
+#include "contacts/WheelRailContact.h"
+#include "mbmodel/CarParameters.h"
+#include "mbmodel/ChannelLayout.h"
+
+#include <Simbody.h>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+struct WheelsetSpec {
+    double x = 0;              ///< axle position on the car, forward of car center [m]
+    int lumpedWheelsets = 1;   ///< 2 = the half car's equivalent wheelset
+    RailInputFunction rails;   ///< rail heights under this wheelset
+};
+
+struct TruckSpec {
+    std::string label;                  ///< "F" (leading) or "R"
+    double x = 0;                       ///< truck center on the car [m]
+    std::vector<WheelsetSpec> wheelsets;
+    double carBodyLoad = 0;             ///< static load on its center plate [N]
+    bool threeDimensional = false;      ///< rim ring, yaw friction, longitudinal pin
+};
+
+class Truck {
+public:
+    /// p_CarBodyPlate: the car body's center-plate point in the car body frame.
+    Truck(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForceSubsystem& forces,
+          const SimTK::MobilizedBody& carBody, const SimTK::Vec3& p_CarBodyPlate,
+          const CarParameters& car, TruckSpec spec);
+
+    /// Places bolster and wheelsets in static equilibrium on level rails at
+    /// height 0 under the truck's static load; returns the ground height the
+    /// car body's plate must have.
+    double setStaticState(SimTK::State& s) const;
+
+    void declareChannels(ChannelLayout& layout) const;
+    /// Writes this truck's channels, in declareChannels order, starting at out.
+    double* calcChannels(const SimTK::State& s, double* out) const;
+
+    const SimTK::MobilizedBody& getBolster() const { return bolster_; }
+    const SimTK::MobilizedBody& getWheelset(int i) const { return wheelsets_[i]; }
+    int getNumWheelsets() const { return int(wheelsets_.size()); }
+    const WheelRailContact& getWheelRail(int i) const { return *wheelRail_[i]; }
+    const CenterPlateContact& getCenterPlate() const { return *centerPlate_; }
+    const SideBearing& getSideBearing(int side) const { return *sideBearing_[side]; }
+    const VerticalSpringGroup& getVerticalSpring(int side) const { return *verticalSpring_[side]; }
+    const FrictionWedge& getFrictionWedge(int side) const { return *wedge_[side]; }
+
+private:
+    void addBodies(SimTK::SimbodyMatterSubsystem& matter);
+    void addElements(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& carBody,
+                     const SimTK::Vec3& p_CarBodyPlate);
+    SuspensionLink makeSuspensionLink(double sideSign) const;
+    double calcStaticWheelLoad(int wheelset) const;  ///< per wheel of that body [N]
+
+    const CarParameters car_;
+    const TruckSpec spec_;
+    SimTK::MobilizedBody bolster_;
+    std::vector<SimTK::MobilizedBody> wheelsets_;
+    // Owned by the force subsystem; kept for output.
+    const CenterPlateContact* centerPlate_ = nullptr;
+    const SideBearing* sideBearing_[2] = {nullptr, nullptr};
+    const VerticalSpringGroup* verticalSpring_[2] = {nullptr, nullptr};
+    const LateralSpringGroup* lateralSpring_[2] = {nullptr, nullptr};
+    const FrictionWedge* wedge_[2] = {nullptr, nullptr};
+    std::vector<const WheelRailContact*> wheelRail_;
+};
+
+/// A body moving in the track's cross-section plane at longitudinal position x:
+/// lateral y, vertical z and roll about x (SimTK Planar mobilizer, q = [roll, y, z]).
+SimTK::MobilizedBody::Planar makeCrossSectionBody(SimTK::MobilizedBody& ground, double x,
+                                                  const SimTK::Body::Rigid& body);
+
+}  // namespace rockroll

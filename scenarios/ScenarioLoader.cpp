@@ -1,0 +1,221 @@
+#include "scenarios/ScenarioLoader.h"
+
+#include "scenarios/DefaultScenario.h"
+
+#include <fmt/format.h>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace rockroll {
+
+namespace {
+
+/// Reads typed values out of one TOML table, remembering which keys were used.
+class TableReader {
+public:
+    TableReader(const toml::table* table, std::string source, std::string prefix)
+        : table_(table), source_(std::move(source)), prefix_(std::move(prefix)) {}
+
+    bool has(const std::string& key) const { return table_ && table_->contains(key); }
+
+    [[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& expected) const {
+        throw ScenarioError(fmt::format("{}: key '{}{}' = {}: expected {}", source_, prefix_, key, value, expected));
+    }
+
+    double getQuantity(const std::string& key, units::Dimension dim) {
+        const toml::node* n = require(key);
+        if (dim == units::Dimension::Dimensionless) {
+            if (auto v = n->value<double>()) return *v;
+            fail(key, describe(*n), "a plain number");
+        }
+        const auto text = n->value<std::string>();
+        if (!text)
+            fail(key, describe(*n), fmt::format("a string \"<number> <unit>\" with a {} unit ({})",
+                                                units::getDimensionName(dim), units::getAcceptedUnits(dim)));
+        try {
+            return units::parseQuantity(*text, dim);
+        } catch (const std::invalid_argument& e) {
+            fail(key, describe(*n), fmt::format("a {} ({})", units::getDimensionName(dim), e.what()));
+        }
+    }
+    double getQuantity(const std::string& key, units::Dimension dim, double fallback) {
+        return has(key) ? getQuantity(key, dim) : fallback;
+    }
+    std::string getString(const std::string& key, const std::set<std::string>& allowed) {
+        const toml::node* n = require(key);
+        const auto v = n->value<std::string>();
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        if (!v || !allowed.count(*v)) fail(key, describe(*n), "one of: " + list);
+        return *v;
+    }
+    std::string getString(const std::string& key, const std::set<std::string>& allowed, std::string fallback) {
+        return has(key) ? getString(key, allowed) : fallback;
+    }
+    std::string getText(const std::string& key, std::string fallback) {
+        if (!has(key)) return fallback;
+        const toml::node* n = require(key);
+        if (auto v = n->value<std::string>()) return *v;
+        fail(key, describe(*n), "a string");
+    }
+    bool getBool(const std::string& key, bool fallback) {
+        if (!has(key)) return fallback;
+        const toml::node* n = require(key);
+        if (auto v = n->value<bool>()) return *v;
+        fail(key, describe(*n), "true or false");
+    }
+    long getInt(const std::string& key, long fallback, long minimum) {
+        if (!has(key)) return fallback;
+        const toml::node* n = require(key);
+        const auto v = n->value<int64_t>();
+        if (!v || !n->is_integer() || *v < minimum) fail(key, describe(*n), fmt::format("an integer ≥ {}", minimum));
+        return long(*v);
+    }
+    /// Every key present in the table that nobody read is an error.
+    void rejectUnknown(const std::set<std::string>& alsoAllowed = {}) const {
+        if (!table_) return;
+        for (const auto& [k, v] : *table_) {
+            const std::string key(k.str());
+            if (!used_.count(key) && !alsoAllowed.count(key))
+                fail(key, describe(v), "no such key here (misspelt or not supported)");
+        }
+    }
+    static std::string describe(const toml::node& n) {
+        std::ostringstream os;
+        n.visit([&os](const auto& v) { os << v; });
+        return os.str();
+    }
+    const toml::node* require(const std::string& key) {
+        used_.insert(key);
+        const toml::node* n = table_ ? table_->get(key) : nullptr;
+        if (!n) fail(key, "(missing)", "this key to be present");
+        return n;
+    }
+
+private:
+    const toml::table* table_;
+    std::string source_, prefix_;
+    std::set<std::string> used_;
+};
+
+const toml::table* getTable(const toml::table& root, const std::string& name, const std::string& source,
+                            bool required) {
+    const toml::node* n = root.get(name);
+    if (!n) {
+        if (required) throw ScenarioError(fmt::format("{}: table [{}] is missing", source, name));
+        return nullptr;
+    }
+    if (!n->is_table()) throw ScenarioError(fmt::format("{}: key '{}' must be a table [{}]", source, name, name));
+    return n->as_table();
+}
+
+void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader car(getTable(root, "car", src, true), src, "car.");
+    const auto names = getCarNames();
+    sc.car = makeCarParameters(car.getString("base", {names.begin(), names.end()}));
+    std::set<std::string> overrides;
+    for (const auto& [k, v] : *root.get("car")->as_table()) {
+        const std::string key(k.str());
+        if (key == "base") continue;
+        const CarParameterInfo* info = findCarParameter(key);
+        if (!info) continue;  // rejectUnknown reports it
+        sc.car.*(info->member) = car.getQuantity(key, info->dimension);
+        overrides.insert(key);
+        if (key != "center_plate_friction" && key != "contact_dissipation" && !(sc.car.*(info->member) > 0) &&
+            key != "side_bearing_clearance")
+            car.fail(key, TableReader::describe(v), "a positive value");
+    }
+    car.rejectUnknown(overrides);
+}
+
+void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
+    using units::Dimension;
+    const toml::table* t = getTable(root, "track", src, true);
+    TableReader track(t, src, "track.");
+    sc.track.amplitude = track.getQuantity("amplitude", Dimension::Length);
+    if (sc.track.amplitude < 0) track.fail("amplitude", fmt::format("{}", sc.track.amplitude), "a length ≥ 0");
+    sc.track.railLength = track.getQuantity("rail_length", Dimension::Length);
+    if (!(sc.track.railLength > 0)) track.fail("rail_length", "≤ 0", "a positive length");
+    sc.track.rails = int(track.getInt("rails", 0, 0));
+    sc.track.mirror = track.getBool("mirror", false);
+    sc.entry = track.getString("entry", {"lead", "synchronized"}, "lead") == "lead" ? TrackEntry::Lead
+                                                                                  : TrackEntry::Synchronized;
+    if (track.has("measured")) {
+        const toml::node* m = track.require("measured");
+        const toml::array* arr = m->as_array();
+        if (!arr || !arr->is_array_of_tables())
+            track.fail("measured", TableReader::describe(*m), "an array of tables [[track.measured]]");
+        for (size_t i = 0; i < arr->size(); ++i) {
+            TableReader row(arr->get(i)->as_table(), src, fmt::format("track.measured[{}].", i));
+            MeasuredTrackSample sample;
+            sample.distance = row.getQuantity("distance", Dimension::Length);
+            sample.crossLevel = row.getQuantity("cross_level", Dimension::Length);
+            sample.profile = row.getQuantity("profile", Dimension::Length, 0.0);
+            row.rejectUnknown();
+            if (!sc.track.measured.empty() && !(sample.distance > sc.track.measured.back().distance))
+                row.fail("distance", TableReader::describe(*arr->get(i)), "distances that increase strictly");
+            sc.track.measured.push_back(sample);
+        }
+    }
+    track.rejectUnknown();
+}
+
+void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
+    using units::Dimension;
+    TableReader run(getTable(root, "run", src, true), src, "run.");
+    sc.speed = run.getQuantity("speed", Dimension::Speed);
+    if (!(sc.speed > 0)) run.fail("speed", "≤ 0", "a positive speed");
+    sc.run.duration = run.getQuantity("duration", Dimension::Time);
+    if (!(sc.run.duration > 0)) run.fail("duration", "≤ 0", "a positive time");
+    sc.model = run.getString("model", {"halfcar", "fullcar"});
+    sc.run.outputRate = run.getQuantity("output_rate", Dimension::Frequency, 500.0);
+    sc.filterCutoffHz = run.getQuantity("filter_cutoff", Dimension::Frequency, 20.0);
+    if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
+        run.fail("filter_cutoff", fmt::format("{} Hz", sc.filterCutoffHz), "a cut-off below half the output rate");
+    run.rejectUnknown();
+
+    TableReader integ(getTable(root, "integrator", src, true), src, "integrator.");
+    const auto methods = getIntegratorNames();
+    sc.run.integrator.method = integ.getString("method", {methods.begin(), methods.end()});
+    sc.run.integrator.accuracy = integ.getQuantity("accuracy", Dimension::Dimensionless);
+    if (!(sc.run.integrator.accuracy > 0 && sc.run.integrator.accuracy < 1))
+        integ.fail("accuracy", fmt::format("{}", sc.run.integrator.accuracy), "a number in (0, 1)");
+    sc.run.integrator.maxStepSize = integ.getQuantity("max_step", Dimension::Time, 0.0);
+    integ.rejectUnknown();
+}
+
+}  // namespace
+
+Scenario parseScenario(std::string_view text, const std::string& source) {
+    toml::table root;
+    try {
+        root = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                        e.source().begin.column, e.description()));
+    }
+    Scenario sc;
+    sc.source = source;
+    TableReader top(&root, source, "");
+    sc.description = top.getText("description", "");
+    readCar(root, source, sc);
+    readTrack(root, source, sc);
+    readRun(root, source, sc);
+    for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
+    top.rejectUnknown();
+    return sc;
+}
+
+Scenario loadScenarioFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw ScenarioError(fmt::format("{}: cannot open scenario file", path));
+    std::stringstream buf;
+    buf << in.rdbuf();
+    return parseScenario(buf.str(), path);
+}
+
+Scenario getDefaultScenario() { return parseScenario(kDefaultScenarioToml, "<embedded default: 70ton-loaded.toml>"); }
+
+}  // namespace rockroll

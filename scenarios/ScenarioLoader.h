@@ -1,0 +1,38 @@
+#pragma once
+// Scenario files (TOML): a complete case — car, track, speed, duration, model,
+// integrator. Quantities carry units ("0.75 in", "15.5 mph"). Any missing,
+// unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
+// the key, the value and what was expected.
+#include "mbmodel/CarParameters.h"
+#include "mbmodel/RockingModel.h"
+#include "mbmodel/Simulation.h"
+#include "mbmodel/TrackInput.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace rockroll {
+
+struct Scenario {
+    std::string source;          ///< file path, or "<embedded default>"
+    std::string description;
+    CarParameters car;
+    TrackSpec track;
+    TrackEntry entry = TrackEntry::Lead;
+    double speed = 0;            ///< [m/s]
+    std::string model;           ///< halfcar | fullcar
+    RunSettings run;
+    double filterCutoffHz = 20;
+};
+
+class ScenarioError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+Scenario loadScenarioFile(const std::string& path);
+Scenario parseScenario(std::string_view tomlText, const std::string& sourceName);
+/// The default case: 70-ton loaded, 0.75 in, 16.5 mph, full car, 20 s (report Figs 8–10).
+Scenario getDefaultScenario();
+
+}  // namespace rockroll

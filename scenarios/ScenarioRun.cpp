@@ -1,0 +1,25 @@
+#include "scenarios/ScenarioRun.h"
+
+namespace rockroll {
+
+std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc) {
+    return makeRockingModel(sc.model, sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry});
+}
+
+ScenarioRun runScenario(const Scenario& sc) {
+    const auto model = makeScenarioModel(sc);
+    ScenarioRun run;
+    run.result = simulate(*model, sc.run);
+    SummaryOptions opt;
+    opt.forcingPeriod = sc.track.railLength / sc.speed;
+    opt.filterCutoffHz = sc.filterCutoffHz;
+    run.summary = summarizeRun(run.result, model->getChannels(), opt);
+    run.summary.model = sc.model;
+    run.summary.car = sc.car.name;
+    run.summary.speedMph = sc.speed / units::mph;
+    run.summary.amplitudeIn = sc.track.amplitude / units::inch;
+    run.summary.durationS = sc.run.duration;
+    return run;
+}
+
+}  // namespace rockroll
