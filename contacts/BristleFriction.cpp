@@ -22,15 +22,17 @@ BristleFrictionState calcBristleFriction(double w, double v, const BristleFricti
     }
     const double wMax = law.limit / law.stiffness;
     const double ratio = std::abs(w) / wMax;
-    double alpha = 0;
-    if (v * w > 0)
-        alpha = ratio >= 1 ? 1.0 : smoothstep((ratio - law.presliding) / (1 - law.presliding));
+    // Slip blends in near the limit deflection, and only while the surfaces move
+    // further in the loading direction; both blends are smooth (C¹) so the
+    // implicit integrator does not see a jump when the velocity reverses.
+    const double loading = smoothstep(v * (w >= 0 ? 1 : -1) / law.reversalVelocity);
+    const double alpha = loading * (ratio >= 1 ? 1.0 : smoothstep((ratio - law.presliding) / (1 - law.presliding)));
     double wDot = v * (1 - alpha);
     if (ratio > 1) wDot -= (w - std::copysign(wMax, w)) / law.relaxationTime;
     const double f = std::clamp(law.stiffness * w + law.damping * wDot, -law.limit, law.limit);
     out.force = -f;
     out.deflectionRate = wDot;
-    out.slipping = alpha > 0.5 || ratio >= 1;
+    out.slipping = alpha > 0.5;
     return out;
 }
 

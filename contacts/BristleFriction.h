@@ -12,6 +12,8 @@ struct BristleFrictionLaw {
     double damping = 0;    ///< bristle damping c_b ≥ 0
     /// Fraction of the limit deflection where slip starts to blend in (β).
     double presliding = 0.95;
+    /// Sliding speed over which slip blends in after a reversal [m/s or rad/s].
+    double reversalVelocity = 1e-3;
     /// Time constant that pulls an overstretched bristle (limit dropped) back [s].
     double relaxationTime = 0.002;
 };
@@ -25,8 +27,9 @@ struct BristleFrictionState {
 /// Bristle deflection w (state) and relative sliding velocity v:
 ///
 ///     w_max = F_c / k_b
-///     α(w,v) = 0                            if v·w ≤ 0 (unloading: sticks)
-///            = smoothstep((|w|/w_max − β)/(1 − β))   otherwise, 1 for |w| ≥ w_max
+///     α(w,v) = S(v·sign(w)/v_r) · S((|w|/w_max − β)/(1 − β))   (S: C¹ smoothstep
+///              clamped to [0, 1]; S(·) = 1 for |w| ≥ w_max), so α = 0 while
+///              unloading (v·w ≤ 0: sticks) and inside β·w_max
 ///     ẇ = v·(1 − α) − (w − sign(w)·w_max)/τ · [|w| > w_max]
 ///     F = −clamp(k_b·w + c_b·ẇ, −F_c, F_c)
 ///

@@ -83,7 +83,8 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings) {
     for (long k = 1; k <= nOut; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
         try {
-            integ->stepTo(tOut);
+            // stepTo may return early at the start of the interval; repeat until tOut.
+            while (integ->getTime() < tOut && !integ->isSimulationOver()) integ->stepTo(tOut);
         } catch (const std::exception& e) {
             throw NumericalFailure(fmt::format("integration failed ({}) near t = {:.6f} s: {}\nlast good state:\n{}",
                                                settings.integrator.method, integ->getTime(), e.what(),

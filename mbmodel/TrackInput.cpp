@@ -26,7 +26,9 @@ RailPoint TrackInput::calcRails(double s) const {
 RailPoint TrackInput::calcRectifiedSine(double s) const {
     RailPoint p;
     const double L = spec_.railLength, A = spec_.amplitude;
-    if (s < 0 || (spec_.rails > 0 && s > spec_.rails * L) || A == 0) return p;
+    // The level lead-in includes s = 0 itself, so the car stands in static
+    // equilibrium at t = 0 and the rails start to move just after.
+    if (s <= 0 || (spec_.rails > 0 && s > spec_.rails * L) || A == 0) return p;
     const double k = M_PI / L;
     const double u = k * (s + L / 4);
     const double base = A / std::sqrt(2.0);
