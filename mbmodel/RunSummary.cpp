@@ -72,7 +72,8 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
         const auto x = getColumn(h, c);
         const double staticLoad = x.front();
         r.rawMinWheelLoadRatio = std::min(r.rawMinWheelLoadRatio, minOf(x) / staticLoad);
-        r.minWheelLoadRatio = std::min(r.minWheelLoadRatio, minOf(filter.apply(x)) / staticLoad);
+        // A load cannot be negative; the filter's undershoot near zero can.
+        r.minWheelLoadRatio = std::min(r.minWheelLoadRatio, std::max(0.0, minOf(filter.apply(x))) / staticLoad);
     }
     r.staticWheelLoadLb = h.samples[0][layout.truckSideWheelLoad.front() + 1];
     r.staticCenterPlateLoadLb = h.samples[0][layout.centerPlate.front() + 1];
