@@ -71,7 +71,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings) {
 
     std::vector<double> channels;
     auto record = [&](const State& s) {
-        model.getSystem().realize(s, Stage::Acceleration);
+        model.getSystem().realize(s, Stage::Velocity);  // every channel is a function of q, u, z, t
         model.calcChannels(s, channels);
         std::vector<double> row{s.getTime()};
         row.insert(row.end(), channels.begin(), channels.end());
