@@ -33,6 +33,15 @@ void FrictionWedge::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
     link_.applyForceOnBolster(s, f, bodyForces);
 }
 
+Real FrictionWedge::calcPotentialEnergy(const State& s) const {
+    Real e = 0;
+    for (Direction d : {Vertical, Lateral}) {
+        const double w = getDeflection(s, d);
+        e += 0.5 * law_[d].stiffness * w * w;
+    }
+    return e;
+}
+
 void FrictionWedge::realizeAcceleration(const State& s) const {
     Vector& zDot = forces_.updZDot(s);
     zDot[z0_ + Vertical] = calcFriction(s, Vertical).deflectionRate;

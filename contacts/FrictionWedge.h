@@ -23,7 +23,8 @@ public:
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
-    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+    /// Elastic energy held in the two bristles, ½·k_b·w².
+    SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
 
     void realizeTopology(SimTK::State& s) const override;
     void realizeAcceleration(const SimTK::State& s) const override;

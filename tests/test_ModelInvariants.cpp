@@ -94,3 +94,38 @@ TEST(ModelInvariants, OneInchCrossLevelNear16MphReachesSideBearingsAndLiftsAWhee
     }
     EXPECT_GE(severe, 1);
 }
+
+TEST(ModelInvariants, WithoutTrackInputEnergyOnlyDecays) {
+    // Level track (no energy supplied): kick the car body into roll and sway and
+    // check that kinetic + potential energy (gravity, springs, contacts, bristles)
+    // never rises above its initial value, and that rocking dies out.
+    for (const char* name : {"halfcar", "fullcar"}) {
+        Scenario sc = makeCase(name, 0.0, 16.5, 1.0);
+        const auto model = makeScenarioModel(sc);
+        SimTK::State s = model->makeStaticState();
+        const SimTK::MobilizedBody& body = model->getCarBody();
+        if (std::string(name) == "halfcar") {
+            body.setOneU(s, 0, 0.15);  // roll rate [rad/s]
+            body.setOneU(s, 1, 0.10);  // lateral [m/s]
+        } else {
+            body.setUToFitAngularVelocity(s, SimTK::Vec3(0.15, 0, 0));
+            body.setUToFitLinearVelocity(s, SimTK::Vec3(0, 0.10, 0));
+        }
+        const double e0 = model->calcMechanicalEnergy(s);
+        SimTK::CPodesIntegrator integ(model->getSystem());
+        integ.setAccuracy(1e-5);
+        integ.initialize(s);
+        double eMax = e0, eEnd = e0;
+        for (int k = 1; k <= 300; ++k) {
+            const double t = 0.01 * k;
+            while (integ.getTime() < t) integ.stepTo(t);
+            eEnd = model->calcMechanicalEnergy(integ.getState());
+            eMax = std::max(eMax, eEnd);
+        }
+        const double kick = e0 - model->calcMechanicalEnergy(model->makeStaticState());
+        ASSERT_GT(kick, 100.0) << name;
+        EXPECT_LT(eMax - e0, 1e-3 * kick) << name << ": energy rose without input";
+        EXPECT_LT(e0 - eEnd, kick * 1.001) << name;   // cannot lose more than it had above rest
+        EXPECT_GT(e0 - eEnd, 0.2 * kick) << name;     // friction and contact damping dissipate
+    }
+}
