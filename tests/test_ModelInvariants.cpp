@@ -129,3 +129,19 @@ TEST(ModelInvariants, WithoutTrackInputEnergyOnlyDecays) {
         EXPECT_GT(e0 - eEnd, 0.2 * kick) << name;     // friction and contact damping dissipate
     }
 }
+
+TEST(ModelInvariants, ResponseConvergesAsContactStiffnessGrows) {
+    auto maxRoll = [](double amplitude, double speed, double scale) {
+        Scenario sc = makeCase("halfcar", amplitude, speed, 12.0);
+        sc.car.contactStiffnessScale = scale;
+        return runScenario(sc).summary.maxRollDeg;
+    };
+    // Moderate rocking: successive doublings change max roll less and less.
+    const double r05 = maxRoll(0.75, 22, 0.5), r1 = maxRoll(0.75, 22, 1), r2 = maxRoll(0.75, 22, 2),
+                 r4 = maxRoll(0.75, 22, 4);
+    EXPECT_LT(std::abs(r4 - r2), std::abs(r1 - r05));
+    EXPECT_NEAR(r4, r1, 0.03 * r4);
+    // Severe rocking (center plate lifts, wheels lift): max roll within 5 %.
+    const double s1 = maxRoll(0.75, 16.5, 1), s4 = maxRoll(0.75, 16.5, 4);
+    EXPECT_NEAR(s4, s1, 0.05 * s4);
+}
