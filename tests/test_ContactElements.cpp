@@ -210,3 +210,43 @@ TEST(WheelRailContact, LiftedWheelCarriesNothingAndLateralGoesThroughTheOther) {
     EXPECT_EQ(f.lateral[0], 0.0);
     EXPECT_LT(f.lateral[1], 0.0);  // restoring, all through the right rail
 }
+
+TEST(CenterPlateContact, YawFrictionSticksBelowItsLimitAndSlipsAbove) {
+    // A 3-D car body seated (by gravity) on the plate ring of a fixed bowl, twisted
+    // by a constant yaw torque. Limit T_c = μ·N·(2/3)·a_c.
+    const double m = 1000, g = 9.80665, mu = 0.25, a = 0.1778, Izz = 500;
+    const double Tc = mu * m * g * (2.0 / 3.0) * a;
+    for (double fraction : {0.5, 1.5}) {
+        SimTK::MultibodySystem system;
+        SimTK::SimbodyMatterSubsystem matter(system);
+        SimTK::GeneralForceSubsystem forces(system);
+        SimTK::MobilizedBody::Free car(matter.updGround(),
+                                       SimTK::Body::Rigid(SimTK::MassProperties(m, Vec3(0), SimTK::Inertia(Izz))));
+        const double kYaw = Tc / 1e-4;
+        auto* cp = new CenterPlateContact(forces, {car, Vec3(0), matter.updGround(), Vec3(0), a, 16},
+                                          {{1e8 / 16, 0}, 1e8, 2 * 0.5 * std::sqrt(1e8 * m), true, mu, kYaw,
+                                           2 * 0.5 * std::sqrt(kYaw * Izz)});
+        SimTK::Force::Custom(forces, cp);
+        SimTK::Force::UniformGravity(forces, matter, Vec3(0, 0, -g));
+        SimTK::Force::ConstantTorque(forces, car, Vec3(0, 0, fraction * Tc));
+        system.realizeTopology();
+        SimTK::State s = system.getDefaultState();
+        car.setQToFitTranslation(s, Vec3(0, 0, -m * g / 1e8));  // seated at rest
+        SimTK::CPodesIntegrator integ(system);
+        integ.setAccuracy(1e-6);
+        integ.initialize(s);
+        auto yawAt = [&](double t) {
+            while (integ.getTime() < t && !integ.isSimulationOver()) integ.stepTo(t);
+            return car.getBodyRotation(integ.getState()).convertRotationToBodyFixedXYZ()[2];
+        };
+        const double y1 = yawAt(0.5), y2 = yawAt(1.5);
+        if (fraction < 1) {
+            EXPECT_NEAR(y2, y1, 1e-4 * std::abs(y1)) << "yaw creep below the friction limit";
+            EXPECT_LT(std::abs(y1), 1e-4);
+        } else {
+            EXPECT_GT(y2 - y1, 0.01) << "no slip above the friction limit";
+            system.realize(integ.getState(), SimTK::Stage::Velocity);
+            EXPECT_NEAR(cp->calcForces(integ.getState()).yawTorque, -Tc, 0.02 * Tc);
+        }
+    }
+}
