@@ -1,5 +1,7 @@
 #include "scenarios/ScenarioRun.h"
 
+#include <cmath>
+
 namespace rockroll {
 
 std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc) {
@@ -16,8 +18,10 @@ ScenarioRun runScenario(const Scenario& sc) {
     run.summary = summarizeRun(run.result, model->getChannels(), opt);
     run.summary.model = sc.model;
     run.summary.car = sc.car.name;
-    run.summary.speedMph = sc.speed / units::mph;
-    run.summary.amplitudeIn = sc.track.amplitude / units::inch;
+    // Inputs echoed in the units they were given, without conversion round-off.
+    auto echo = [](double x) { return std::round(x * 1e9) / 1e9; };
+    run.summary.speedMph = echo(sc.speed / units::mph);
+    run.summary.amplitudeIn = echo(sc.track.amplitude / units::inch);
     run.summary.durationS = sc.run.duration;
     return run;
 }
