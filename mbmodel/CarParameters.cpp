@@ -13,9 +13,8 @@ namespace {
 
 const std::vector<CarParameterInfo> kTable = [] {
     using P = CarParameters;
-    auto e = [](const char* key, double P::*m, Dimension d, const char* unit, const char* src) {
-        return CarParameterInfo{key, m, d, unit, src};
-    };
+    auto e = [](const char* key, double P::*m, Dimension d, const char* unit, const char* src,
+                bool mayBeZero = false) { return CarParameterInfo{key, m, d, unit, src, mayBeZero}; };
     const char* t2 = "report Table 2";
     const char* b4 = "brief §4";
     const char* as = "assumed (docs/model.md)";
@@ -48,18 +47,18 @@ const std::vector<CarParameterInfo> kTable = [] {
         e("side_frame_weight", &P::sideFrameWeight, Dimension::Force, "lb", b4),
         e("wheelset_roll_inertia", &P::wheelsetRollInertia, Dimension::MomentOfInertia, "lb*in*s^2", as),
         e("wheel_radius", &P::wheelRadius, Dimension::Length, "in", b4),
-        e("side_bearing_clearance", &P::sideBearingClearance, Dimension::Length, "in", b4),
+        e("side_bearing_clearance", &P::sideBearingClearance, Dimension::Length, "in", b4, true),
         e("wheel_rail_stiffness", &P::wheelRailStiffness, Dimension::Stiffness, "lb/in", as),
         e("center_plate_stiffness", &P::centerPlateStiffness, Dimension::Stiffness, "lb/in", as),
         e("side_bearing_stiffness", &P::sideBearingStiffness, Dimension::Stiffness, "lb/in", as),
         e("contact_stiffness_scale", &P::contactStiffnessScale, Dimension::Dimensionless, "", as),
-        e("contact_dissipation", &P::contactDissipation, Dimension::Dimensionless, "s/m", as),
+        e("contact_dissipation", &P::contactDissipation, Dimension::Dimensionless, "s/m", as, true),
         e("center_pin_stiffness", &P::centerPinStiffness, Dimension::Stiffness, "lb/in", as),
         e("wheel_rail_lateral_stiffness", &P::wheelRailLateralStiffness, Dimension::Stiffness, "lb/in", as),
-        e("lateral_contact_damping_ratio", &P::lateralContactDampingRatio, Dimension::Dimensionless, "", as),
+        e("lateral_contact_damping_ratio", &P::lateralContactDampingRatio, Dimension::Dimensionless, "", as, true),
         e("friction_bristle_deflection", &P::frictionBristleDeflection, Dimension::Length, "in", as),
-        e("friction_bristle_damping_ratio", &P::frictionBristleDampingRatio, Dimension::Dimensionless, "", as),
-        e("center_plate_friction", &P::centerPlateFriction, Dimension::Dimensionless, "", as),
+        e("friction_bristle_damping_ratio", &P::frictionBristleDampingRatio, Dimension::Dimensionless, "", as, true),
+        e("center_plate_friction", &P::centerPlateFriction, Dimension::Dimensionless, "", as, true),
         e("center_plate_yaw_bristle_angle", &P::centerPlateYawBristleAngle, Dimension::Angle, "deg", as),
         e("center_plate_rim_points", &P::centerPlateRimPoints, Dimension::Dimensionless, "", as),
     };

@@ -68,6 +68,7 @@ struct CarParameterInfo {
     units::Dimension dimension;
     const char* displayUnit;   ///< unit used in docs and printouts
     const char* source;        ///< where the default comes from
+    bool mayBeZero = false;    ///< zero is meaningful (no clearance, no damping, no friction)
 };
 
 const std::vector<CarParameterInfo>& getCarParameterTable();

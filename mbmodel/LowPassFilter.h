@@ -13,7 +13,6 @@ public:
     LowPassFilter(double cutoffHz, double sampleRateHz);
     std::vector<double> apply(const std::vector<double>& x) const;
     std::string getDescription() const;
-    double getCutoff() const { return cutoff_; }
 
 private:
     std::vector<double> pass(const std::vector<double>& x) const;

@@ -88,10 +88,4 @@ double parseQuantity(std::string_view text, Dimension expected) {
                                             getAcceptedUnits(expected)));
 }
 
-double convertFromSI(double value, std::string_view unit, Dimension d) {
-    for (const auto& u : kUnits)
-        if (u.name == unit && u.dim == d) return value / u.toSI;
-    throw std::invalid_argument(fmt::format("unit \"{}\" is not a {}", unit, getDimensionName(d)));
-}
-
 }  // namespace rockroll::units

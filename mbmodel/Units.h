@@ -26,7 +26,4 @@ std::string getAcceptedUnits(Dimension d);
 /// Throws std::invalid_argument naming what was expected.
 double parseQuantity(std::string_view text, Dimension expected);
 
-/// Formats an SI value in the given unit name (must be one parseQuantity accepts).
-double convertFromSI(double value, std::string_view unit, Dimension d);
-
 }  // namespace rockroll::units

@@ -115,19 +115,15 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader car(getTable(root, "car", src, true), src, "car.");
     const auto names = getCarNames();
     sc.car = makeCarParameters(car.getString("base", {names.begin(), names.end()}));
-    std::set<std::string> overrides;
     for (const auto& [k, v] : *root.get("car")->as_table()) {
-        const std::string key(k.str());
-        if (key == "base") continue;
-        const CarParameterInfo* info = findCarParameter(key);
-        if (!info) continue;  // rejectUnknown reports it
-        sc.car.*(info->member) = car.getQuantity(key, info->dimension);
-        overrides.insert(key);
-        if (key != "center_plate_friction" && key != "contact_dissipation" && !(sc.car.*(info->member) > 0) &&
-            key != "side_bearing_clearance")
-            car.fail(key, TableReader::describe(v), "a positive value");
+        const CarParameterInfo* info = findCarParameter(k.str());
+        if (!info) continue;  // "base" was read above; rejectUnknown reports the rest
+        const double value = car.getQuantity(info->key, info->dimension);
+        if (value < 0 || (value == 0 && !info->mayBeZero))
+            car.fail(info->key, TableReader::describe(v), info->mayBeZero ? "a value ≥ 0" : "a positive value");
+        sc.car.*(info->member) = value;
     }
-    car.rejectUnknown(overrides);
+    car.rejectUnknown();
 }
 
 void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
