@@ -16,7 +16,10 @@ namespace {
 double gSimSeconds = 20;
 struct Measured {
     double realTimeFactor = 0, maxRoll = 0;
-    long steps = 0;
+    long steps = 0, realizations = 0;
+    double wallS = 0, simS = 0;
+    double getMicrosPerRealization() const { return 1e6 * wallS / double(realizations); }
+    double getRealizationsPerSimSecond() const { return double(realizations) / simS; }
 };
 std::map<std::string, Measured> gMeasured;
 
@@ -28,11 +31,37 @@ void runCase(benchmark::State& state, const std::string& model, const std::strin
     sc.run.integrator.accuracy = accuracy;
     ScenarioRun run;
     for (auto _ : state) run = runScenario(sc);
-    Measured m{run.summary.simTimeS / run.summary.wallTimeS, run.summary.maxRollDeg, run.summary.steps};
+    const RunSummary& r = run.summary;
+    Measured m{r.simTimeS / r.wallTimeS, r.maxRollDeg, r.steps, r.realizations, r.wallTimeS, r.simTimeS};
     gMeasured[fmt::format("{} {} {:g}", model, method, accuracy)] = m;
     state.counters["sim_s_per_wall_s"] = m.realTimeFactor;
     state.counters["max_roll_deg"] = m.maxRoll;
     state.counters["steps"] = double(m.steps);
+    state.counters["realizations"] = double(m.realizations);
+}
+// Cost of one right-hand-side evaluation: realize a perturbed state through
+// Acceleration, with every force element enabled or with all of them disabled
+// (Simbody's own floor for the same bodies and mobilities).
+void realizeCost(benchmark::State& state, const std::string& model, bool withForces) {
+    Scenario sc = getDefaultScenario();
+    sc.model = model;
+    auto m = makeScenarioModel(sc);
+    const SimTK::MultibodySystem& sys = m->getSystem();
+    SimTK::State s = m->makeStaticState();
+    if (!withForces) {
+        const SimTK::GeneralForceSubsystem& forces = m->getForces();
+        for (int i = 0; i < forces.getNumForces(); ++i) forces.getForce(SimTK::ForceIndex(i)).disable(s);
+    }
+    double t = 0;
+    for (auto _ : state) {
+        t += 1e-4;
+        s.setTime(t);
+        s.updQ()[0] += 1e-9;  // invalidates Position and above, as an integrator stage does
+        sys.realize(s, SimTK::Stage::Acceleration);
+        benchmark::DoNotOptimize(s.getUDot()[0]);
+    }
+    state.counters["us_per_realization"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 }  // namespace
 
@@ -48,12 +77,25 @@ int main(int argc, char** argv) {
                                          })
                 ->Iterations(1)
                 ->Unit(benchmark::kSecond);
+    for (const char* model : {"halfcar", "fullcar"})
+        for (bool withForces : {true, false})
+            benchmark::RegisterBenchmark(
+                fmt::format("realize/{}/{}", model, withForces ? "all_elements" : "elements_disabled").c_str(),
+                [m = std::string(model), withForces](benchmark::State& s) { realizeCost(s, m, withForces); });
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
 
-    fmt::print("\n{:<28}{:>16}{:>14}{:>10}\n", "case", "sim s / wall s", "max roll deg", "steps");
-    for (const auto& [name, m] : gMeasured)
-        fmt::print("{:<28}{:>16.1f}{:>14.2f}{:>10}\n", name, m.realTimeFactor, m.maxRoll, m.steps);
+    // The target a model must reach, and the wall time per realization that target
+    // allows at the realization count the integrator actually needed.
+    const std::map<std::string, double> target{{"halfcar", 200}, {"fullcar", 50}};
+    fmt::print("\n{:<28}{:>16}{:>14}{:>10}{:>14}{:>12}{:>14}{:>16}\n", "case", "sim s / wall s", "max roll deg",
+               "steps", "realizations", "real./step", "us / real.", "us/real. target");
+    for (const auto& [name, m] : gMeasured) {
+        const double allowed = 1e6 / (target.at(name.substr(0, 7)) * m.getRealizationsPerSimSecond());
+        fmt::print("{:<28}{:>16.1f}{:>14.2f}{:>10}{:>14}{:>12.1f}{:>14.1f}{:>16.2f}\n", name, m.realTimeFactor,
+                   m.maxRoll, m.steps, m.realizations, double(m.realizations) / double(m.steps),
+                   m.getMicrosPerRealization(), allowed);
+    }
     auto ratio = [](const std::string& a, const std::string& b) {
         if (gMeasured.count(a) && gMeasured.count(b))
             fmt::print("  {} / {}: {:.2f}x\n", a, b, gMeasured[a].realTimeFactor / gMeasured[b].realTimeFactor);

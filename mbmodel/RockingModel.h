@@ -33,6 +33,7 @@ public:
     virtual std::string getName() const = 0;
     const SimTK::MultibodySystem& getSystem() const { return system_; }
     const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+    const SimTK::GeneralForceSubsystem& getForces() const { return forces_; }
     const CarParameters& getCar() const { return car_; }
     const Truck& getTruck(int i) const { return *trucks_[i]; }
     int getNumTrucks() const { return int(trucks_.size()); }

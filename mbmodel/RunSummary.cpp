@@ -86,6 +86,7 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.simTimeS = run.simTime;
     r.wallTimeS = run.wallTime;
     r.steps = run.steps;
+    r.realizations = run.realizations;
     return r;
 }
 

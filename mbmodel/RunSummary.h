@@ -24,6 +24,7 @@ struct RunSummary {
     std::string filter;
     double simTimeS = 0, wallTimeS = 0;
     long steps = 0;
+    long realizations = 0;
 };
 
 struct SummaryOptions {

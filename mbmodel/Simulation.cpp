@@ -108,6 +108,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings) {
         record(s);
     }
     result.steps = integ->getNumStepsTaken();
+    result.realizations = integ->getNumRealizations();
     result.simTime = integ->getTime();
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     return result;

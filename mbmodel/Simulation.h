@@ -30,6 +30,7 @@ struct TimeHistory {
 struct RunResult {
     TimeHistory history;
     long steps = 0;
+    long realizations = 0;  ///< right-hand-side evaluations (System realizations) the integrator made
     double simTime = 0;   ///< [s]
     double wallTime = 0;  ///< [s]
 };
