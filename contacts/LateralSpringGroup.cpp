@@ -6,13 +6,6 @@ using namespace SimTK;
 
 namespace rockroll {
 
-double calcLateralSpringForce(double Y, double Ydot, const LateralSpringLaw& law) {
-    const double sgn = Y >= 0 ? 1.0 : -1.0;
-    const double gib = calcUnilateralNormalForce(std::abs(Y) - law.gibClearance, sgn * Ydot,
-                                                 {law.gibRate, law.gibDissipation});
-    return law.rate * Y + sgn * gib;
-}
-
 double LateralSpringGroup::calcForce(const State& s) const {
     return calcLateralSpringForce(calcDisplacement(s), link_.calcRelativeVelocity(s)[1], law_);
 }

@@ -1,23 +1,10 @@
 #pragma once
 // Lateral suspension spring group with the gib stop at one bolster end.
+#include "contacts/SpringGroupLaws.h"
 #include "contacts/SuspensionLink.h"
 #include "contacts/UnilateralContact.h"
 
 namespace rockroll {
-
-struct LateralSpringLaw {
-    double rate = 0;           ///< K_h [N/m]
-    double gibClearance = 0;   ///< c_gib, half the total gib clearance [m]
-    double gibRate = 0;        ///< K_gib [N/m]
-    double gibDissipation = 0; ///< Hunt–Crossley d of the gib contact [s/m]
-};
-
-/// Lateral force resisting relative displacement Y (bolster relative to side frame):
-///
-///     P = K_h·Y + sign(Y)·f_gib(|Y| − c_gib, d|Y|/dt)
-///
-/// where f_gib is the unilateral contact law (zero inside the clearance).
-double calcLateralSpringForce(double Y, double Ydot, const LateralSpringLaw& law);
 
 class LateralSpringGroup : public SimTK::Force::Custom::Implementation {
 public:

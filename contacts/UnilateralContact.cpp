@@ -6,13 +6,6 @@ using namespace SimTK;
 
 namespace rockroll {
 
-double calcUnilateralNormalForce(double penetration, double penetrationRate,
-                                 const UnilateralContactLaw& law) {
-    if (penetration <= 0) return 0;
-    const double f = law.stiffness * penetration * (1 + law.dissipation * penetrationRate);
-    return std::max(0.0, f);
-}
-
 double VerticalPointPair::calcPenetration(const State& s) const {
     const Vec3 p_GU = upper.findStationLocationInGround(s, p_UpperPoint);
     const Vec3 p_GL = lower.findStationLocationInGround(s, p_LowerPoint);

@@ -4,19 +4,6 @@ using namespace SimTK;
 
 namespace rockroll {
 
-double calcVerticalSpringForce(double Z, const VerticalSpringLaw& law) {
-    if (Z <= 0) return 0;
-    if (Z <= law.travel) return law.rate * Z;
-    return law.rate * law.travel + law.bottomingRate * (Z - law.travel);
-}
-
-double calcVerticalSpringCompression(double P, const VerticalSpringLaw& law) {
-    if (P <= 0) return 0;
-    const double atBottom = law.rate * law.travel;
-    if (P <= atBottom) return P / law.rate;
-    return law.travel + (P - atBottom) / law.bottomingRate;
-}
-
 void VerticalSpringGroup::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
                                     Vector_<Vec3>&, Vector&) const {
     const double P = calcForce(s);

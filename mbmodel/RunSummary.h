@@ -1,7 +1,7 @@
 #pragma once
 // Headline numbers of one run (brief §7), shared by every model.
 #include "mbmodel/ChannelLayout.h"
-#include "mbmodel/Simulation.h"
+#include "mbmodel/TimeHistory.h"
 
 #include <string>
 

@@ -14,11 +14,6 @@ using SimTK::VerletIntegrator; using SimTK::MobilizedBodyIndex;
 
 namespace rockroll {
 
-int TimeHistory::column(const std::string& name) const {
-    for (size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return int(i);
-    throw std::out_of_range("no channel " + name);
-}
 
 std::vector<std::string> getIntegratorNames() { return {"cpodes", "rkmerson", "rk3", "rkf", "verlet"}; }
 

@@ -2,6 +2,7 @@
 // The simulation driver shared by every Simbody model: integrator choice and
 // accuracy, fixed-rate recording, and failure reports with time and state.
 #include "mbmodel/RockingModel.h"
+#include "mbmodel/TimeHistory.h"
 
 #include <stdexcept>
 #include <string>
@@ -19,20 +20,6 @@ struct RunSettings {
     double duration = 20;           ///< [s]
     double outputRate = 500;        ///< samples per second [Hz]
     IntegratorSettings integrator;
-};
-
-struct TimeHistory {
-    std::vector<std::string> names;            ///< "t_s" then the model's channels
-    std::vector<std::vector<double>> samples;  ///< one row per output time
-    int column(const std::string& name) const;
-};
-
-struct RunResult {
-    TimeHistory history;
-    long steps = 0;
-    long realizations = 0;  ///< right-hand-side evaluations (System realizations) the integrator made
-    double simTime = 0;   ///< [s]
-    double wallTime = 0;  ///< [s]
 };
 
 /// Thrown when integration fails; what() names the time and the state.

@@ -1,0 +1,27 @@
+#include "contacts/SpringGroupLaws.h"
+
+#include <cmath>
+
+namespace rockroll {
+
+double calcVerticalSpringForce(double Z, const VerticalSpringLaw& law) {
+    if (Z <= 0) return 0;
+    if (Z <= law.travel) return law.rate * Z;
+    return law.rate * law.travel + law.bottomingRate * (Z - law.travel);
+}
+
+double calcVerticalSpringCompression(double P, const VerticalSpringLaw& law) {
+    if (P <= 0) return 0;
+    const double atBottom = law.rate * law.travel;
+    if (P <= atBottom) return P / law.rate;
+    return law.travel + (P - atBottom) / law.bottomingRate;
+}
+
+double calcLateralSpringForce(double Y, double Ydot, const LateralSpringLaw& law) {
+    const double sgn = Y >= 0 ? 1.0 : -1.0;
+    const double gib = calcUnilateralNormalForce(std::abs(Y) - law.gibClearance, sgn * Ydot,
+                                                 {law.gibRate, law.gibDissipation});
+    return law.rate * Y + sgn * gib;
+}
+
+}  // namespace rockroll

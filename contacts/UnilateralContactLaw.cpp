@@ -1,0 +1,14 @@
+#include "contacts/UnilateralContactLaw.h"
+
+#include <algorithm>
+
+namespace rockroll {
+
+double calcUnilateralNormalForce(double penetration, double penetrationRate,
+                                 const UnilateralContactLaw& law) {
+    if (penetration <= 0) return 0;
+    const double f = law.stiffness * penetration * (1 + law.dissipation * penetrationRate);
+    return std::max(0.0, f);
+}
+
+}  // namespace rockroll
