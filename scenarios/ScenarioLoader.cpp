@@ -165,7 +165,7 @@ void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
     if (!(sc.speed > 0)) run.fail("speed", "≤ 0", "a positive speed");
     sc.run.duration = run.getQuantity("duration", Dimension::Time);
     if (!(sc.run.duration > 0)) run.fail("duration", "≤ 0", "a positive time");
-    sc.model = run.getString("model", {"halfcar", "fullcar"});
+    sc.model = run.getString("model", {"halfcar", "fullcar", "eom"});
     sc.run.outputRate = run.getQuantity("output_rate", Dimension::Frequency, 500.0);
     sc.filterCutoffHz = run.getQuantity("filter_cutoff", Dimension::Frequency, 20.0);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
@@ -180,6 +180,17 @@ void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
         integ.fail("accuracy", fmt::format("{}", sc.run.integrator.accuracy), "a number in (0, 1)");
     sc.run.integrator.maxStepSize = integ.getQuantity("max_step", Dimension::Time, 0.0);
     integ.rejectUnknown();
+}
+
+void readEom(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader eom(getTable(root, "eom", src, false), src, "eom.");
+    EomSimplifications& e = sc.eom;
+    e.linearSprings = eom.getBool("linear_springs", false);
+    e.lockBolsterLateral = eom.getBool("lock_bolster_lateral", false);
+    e.elasticContacts = eom.getBool("elastic_contacts", false);
+    e.equalLateralShares = eom.getBool("equal_lateral_shares", false);
+    e.smallAngles = eom.getBool("small_angles", false);
+    eom.rejectUnknown();
 }
 
 }  // namespace
@@ -199,8 +210,9 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
     readCar(root, source, sc);
     readTrack(root, source, sc);
     readRun(root, source, sc);
+    readEom(root, source, sc);
     for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown();
+    top.rejectUnknown({"eom"});
     return sc;
 }
 

@@ -3,6 +3,7 @@
 // integrator. Quantities carry units ("0.75 in", "15.5 mph"). Any missing,
 // unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
 // the key, the value and what was expected.
+#include "bespoke/EomHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/Simulation.h"
@@ -20,7 +21,8 @@ struct Scenario {
     TrackSpec track;
     TrackEntry entry = TrackEntry::Lead;
     double speed = 0;            ///< [m/s]
-    std::string model;           ///< halfcar | fullcar
+    std::string model;           ///< halfcar | fullcar | eom | reduced
+    EomSimplifications eom;      ///< [eom] table: the report's §4.1 simplifications
     RunSettings run;
     double filterCutoffHz = 20;
 };

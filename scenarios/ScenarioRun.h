@@ -15,6 +15,8 @@ struct ScenarioRun {
 };
 
 std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc);
+/// The equation-of-motion half car of a scenario (its [eom] simplifications).
+EomHalfCarModel makeScenarioEomModel(const Scenario& sc);
 ScenarioRun runScenario(const Scenario& sc);
 
 }  // namespace rockroll

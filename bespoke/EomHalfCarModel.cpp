@@ -1,0 +1,281 @@
+#include "bespoke/EomHalfCarModel.h"
+
+#include "mbmodel/TrackInput.h"
+#include "mbmodel/Units.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rockroll {
+
+namespace {
+constexpr double kSideSign[2] = {+1.0, -1.0};
+constexpr const char* kSideName[2] = {"L", "R"};
+constexpr int kWedgeVertical = 0, kWedgeLateral = 1;  // + 2·side
+
+double criticalDamping(double stiffness, double mass, double ratio) { return 2 * ratio * std::sqrt(stiffness * mass); }
+using Vec2 = Eigen::Vector2d;
+}  // namespace
+
+EomHalfCarModel::EomHalfCarModel(const CarParameters& car, RailStateFunction rails, EomSimplifications simp)
+    : car_(car), rails_(std::move(rails)), simp_(simp) {
+    const double g = units::g;
+    mass_ = {car.getCarBodyWeight() / 2 / g, car.bolsterWeight / g, 2 * (car.wheelsetWeight + car.sideFrameWeight) / g};
+    inertia_ = {car.rollInertia / 2, car.bolsterRollInertia, 2 * car.wheelsetRollInertia};
+
+    const double h = car.cgAboveCenterPlate, R = car.wheelRadius;
+    geom_.plateOnCarBody = Vec2(0, -h);
+    geom_.bowlOnBolster = Vec2(0, car.centerPlateAboveSprings);
+    geom_.rimRadius = car.centerPlateDiameter / 2;
+    for (int side : {0, 1}) {
+        const double sg = kSideSign[side];
+        geom_.padOnCarBody[side] = Vec2(sg * car.sideBearingOffset, -h + car.sideBearingAboveSprings - car.centerPlateAboveSprings);
+        geom_.bearingOnBolster[side] = Vec2(sg * car.sideBearingOffset, car.sideBearingAboveSprings);
+        geom_.springOnBolster[side] = Vec2(sg * car.springOffset, 0);
+        geom_.seatOnWheelset[side] = Vec2(sg * car.springOffset, car.springTopAboveRail - R);
+        geom_.tread[side] = Vec2(sg * car.gauge / 2, -R);
+        geom_.railY[side] = sg * car.gauge / 2;
+    }
+
+    const double scale = car.contactStiffnessScale;
+    const double d = simp.elasticContacts ? 0.0 : car.contactDissipation;
+    const double mB = mass_[Bolster];
+    laws_.rim = {scale * car.centerPlateStiffness / 2, d};
+    laws_.sideBearing = {scale * car.sideBearingStiffness, d};
+    laws_.sideBearingClearance = car.sideBearingClearance;
+    laws_.wheelVertical = {2 * scale * car.wheelRailStiffness, d};
+    laws_.spring = {car.springVerticalRate, car.springTravel, car.bottomingRate};
+    laws_.lateral = {car.springLateralRate, car.gibClearance, car.gibRate, d};
+    laws_.pinStiffness = scale * car.centerPinStiffness;
+    laws_.pinDamping = criticalDamping(laws_.pinStiffness, mB, car.lateralContactDampingRatio);
+    laws_.wheelLateralStiffness = 2 * scale * car.wheelRailLateralStiffness;
+    laws_.wheelLateralDamping = criticalDamping(laws_.wheelLateralStiffness, mass_[Wheelset], car.lateralContactDampingRatio);
+    const double kV = car.verticalFriction / car.frictionBristleDeflection;
+    const double kH = car.lateralFriction / car.frictionBristleDeflection;
+    const double zeta = car.frictionBristleDampingRatio;
+    laws_.wedgeVertical = {car.verticalFriction, kV, criticalDamping(kV, mB / 2, zeta)};
+    laws_.wedgeLateral = {car.lateralFriction, kH, criticalDamping(kH, mB / 2, zeta)};
+    if (simp.lockBolsterLateral) {
+        // A stiff, damped lateral link per bolster end (half the center pin's
+        // stiffness each) replaces spring group, gib and lateral wedge.
+        laws_.lateral = {scale * car.centerPinStiffness / 2, 0, 0, 0};
+        laws_.wedgeLateral.limit = 0;
+    }
+    declareChannels();
+    staticCarBodyZ_ = makeStaticState()[3 * CarBody + 2];
+}
+
+double EomHalfCarModel::calcSpringForce(double Z) const {
+    return simp_.linearSprings ? laws_.spring.rate * Z : calcVerticalSpringForce(Z, laws_.spring);
+}
+
+EomHalfCarModel::State EomHalfCarModel::makeStaticState() const {
+    const CarParameters& c = car_;
+    const double scale = c.contactStiffnessScale;
+    const double carBodyLoad = c.getCarBodyWeight() / 2;
+    const double springLoad = (carBodyLoad + c.bolsterWeight) / 2;
+    const double wheelLoad = springLoad + (c.wheelsetWeight + c.sideFrameWeight);  // per wheel of the equivalent wheelset
+    const double delta = wheelLoad / (2 * scale * c.wheelRailStiffness);
+    const double seatZ = c.springTopAboveRail - delta;
+    const double Z = simp_.linearSprings ? springLoad / laws_.spring.rate
+                                         : calcVerticalSpringCompression(springLoad, laws_.spring);
+    const double bolsterZ = seatZ - Z;
+    const double plateZ = bolsterZ + c.centerPlateAboveSprings - carBodyLoad / (scale * c.centerPlateStiffness);
+    State y = State::Zero();
+    y[3 * Wheelset + 2] = c.wheelRadius - delta;
+    y[3 * Bolster + 2] = bolsterZ;
+    y[3 * CarBody + 2] = plateZ + c.cgAboveCenterPlate;
+    return y;
+}
+
+EomHalfCarModel::Point EomHalfCarModel::findStation(const State& y, int body, const Vec2& p) const {
+    const double th = y[3 * body], thDot = y[kNumDofs + 3 * body];
+    const Vec2 origin(y[3 * body + 1], y[3 * body + 2]);
+    const Vec2 originVel(y[kNumDofs + 3 * body + 1], y[kNumDofs + 3 * body + 2]);
+    Point pt;
+    if (simp_.smallAngles) {
+        pt.r = Vec2(p.x() - th * p.y(), p.y() + th * p.x());
+        pt.v = originVel + thDot * Vec2(-p.y(), p.x());
+    } else {
+        const double c = std::cos(th), s = std::sin(th);
+        pt.r = Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+        pt.v = originVel + thDot * Vec2(-pt.r.y(), pt.r.x());
+    }
+    pt.x = origin + pt.r;
+    return pt;
+}
+
+void EomHalfCarModel::applyForce(Forces& f, int body, const Point& at, const Vec2& F) {
+    f.generalized[3 * body] += at.r.x() * F.y() - at.r.y() * F.x();
+    f.generalized[3 * body + 1] += F.x();
+    f.generalized[3 * body + 2] += F.y();
+}
+
+EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) const {
+    Forces f;
+    const Geometry& g = geom_;
+    // Center plate: rim contacts and pin.
+    for (int side : {0, 1}) {
+        const Vec2 rim(kSideSign[side] * g.rimRadius, 0);
+        const Point up = findStation(y, CarBody, g.plateOnCarBody + rim);
+        const Point lo = findStation(y, Bolster, g.bowlOnBolster + rim);
+        f.rim[side] = calcUnilateralNormalForce(lo.x.y() - up.x.y(), lo.v.y() - up.v.y(), laws_.rim);
+        applyForce(f, CarBody, up, Vec2(0, f.rim[side]));
+        applyForce(f, Bolster, lo, Vec2(0, -f.rim[side]));
+    }
+    {
+        const Point plate = findStation(y, CarBody, g.plateOnCarBody);
+        const Point bowl = findStation(y, Bolster, g.bowlOnBolster);
+        f.pin = -(laws_.pinStiffness * (plate.x.x() - bowl.x.x()) + laws_.pinDamping * (plate.v.x() - bowl.v.x()));
+        applyForce(f, CarBody, plate, Vec2(f.pin, 0));
+        applyForce(f, Bolster, bowl, Vec2(-f.pin, 0));
+    }
+    for (int side : {0, 1}) {
+        // Side bearing.
+        const Point pad = findStation(y, CarBody, g.padOnCarBody[side]);
+        const Point brg = findStation(y, Bolster, g.bearingOnBolster[side]);
+        f.sideBearing[side] = calcUnilateralNormalForce(brg.x.y() - pad.x.y() - laws_.sideBearingClearance,
+                                                        brg.v.y() - pad.v.y(), laws_.sideBearing);
+        applyForce(f, CarBody, pad, Vec2(0, f.sideBearing[side]));
+        applyForce(f, Bolster, brg, Vec2(0, -f.sideBearing[side]));
+
+        // Suspension: springs and wedges between bolster end and side-frame seat.
+        const Point b = findStation(y, Bolster, g.springOnBolster[side]);
+        const Point s = findStation(y, Wheelset, g.seatOnWheelset[side]);
+        const Vec2 rel = b.x - s.x, relVel = b.v - s.v;
+        f.spring[side] = calcSpringForce(-rel.y());
+        if (simp_.lockBolsterLateral) {
+            const double c = criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
+            f.lateralSpring[side] = laws_.lateral.rate * rel.x() + c * relVel.x();
+        } else {
+            f.lateralSpring[side] = calcLateralSpringForce(rel.x(), relVel.x(), laws_.lateral);
+        }
+        const int iv = 2 * side + kWedgeVertical, ih = 2 * side + kWedgeLateral;
+        f.wedge[iv] = calcBristleFriction(y[2 * kNumDofs + iv], relVel.y(), laws_.wedgeVertical);
+        f.wedge[ih] = calcBristleFriction(y[2 * kNumDofs + ih], relVel.x(), laws_.wedgeLateral);
+        const Vec2 onBolster(-f.lateralSpring[side] + f.wedge[ih].force, f.spring[side] + f.wedge[iv].force);
+        applyForce(f, Bolster, b, onBolster);
+        applyForce(f, Wheelset, s, -onBolster);
+    }
+    // Wheel–rail.
+    const RailState rail = rails_(t);
+    std::array<Point, 2> tread;
+    for (int side : {0, 1}) {
+        tread[side] = findStation(y, Wheelset, g.tread[side]);
+        const double delta = rail.z[side] - tread[side].x.y();
+        f.wheel[side] = calcUnilateralNormalForce(delta, rail.zDot[side] - tread[side].v.y(), laws_.wheelVertical);
+        f.wheelLift[side] = std::max(0.0, -delta);
+    }
+    const double total = f.wheel[0] + f.wheel[1];
+    for (int side : {0, 1}) {
+        const double share = simp_.equalLateralShares ? 0.5 : (total > 0 ? f.wheel[side] / total : 0.0);
+        const double e = tread[side].x.x() - g.railY[side];
+        f.wheelLateral[side] = -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
+        applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
+    }
+    for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;
+    return f;
+}
+
+void EomHalfCarModel::calcStateDerivative(double t, const State& y, State& yDot) const {
+    const Forces f = calcForces(t, y);
+    yDot.head<kNumDofs>() = y.segment<kNumDofs>(kNumDofs);
+    for (int b = 0; b < kNumBodies; ++b) {
+        yDot[kNumDofs + 3 * b] = f.generalized[3 * b] / inertia_[b];
+        yDot[kNumDofs + 3 * b + 1] = f.generalized[3 * b + 1] / mass_[b];
+        yDot[kNumDofs + 3 * b + 2] = f.generalized[3 * b + 2] / mass_[b];
+    }
+    for (int i = 0; i < kNumBristles; ++i) yDot[2 * kNumDofs + i] = f.wedge[i].deflectionRate;
+}
+
+void EomHalfCarModel::declareChannels() {
+    ChannelLayout& c = channels_;
+    c.roll = c.add("roll_deg");
+    c.add("car_body_vertical_in");
+    c.add("car_body_lateral_in");
+    c.add("cross_level_F_in");
+    c.centerPlate.push_back(c.add("center_plate_F_lb"));
+    for (int side : {0, 1}) c.sideBearing.push_back(c.add(fmt::format("side_bearing_F_{}_lb", kSideName[side])));
+    for (int side : {0, 1}) {
+        const char* S = kSideName[side];
+        c.add(fmt::format("spring_F_{}_lb", S));
+        c.add(fmt::format("lateral_spring_F_{}_lb", S));
+        c.add(fmt::format("wedge_vertical_F_{}_lb", S));
+        c.add(fmt::format("wedge_vertical_slip_F_{}", S));
+        c.add(fmt::format("wedge_lateral_F_{}_lb", S));
+        c.add(fmt::format("wedge_lateral_slip_F_{}", S));
+    }
+    c.add("bolster_roll_F_deg");
+    c.add("bolster_lateral_F_in");
+    for (int side : {0, 1}) {
+        const int idx = c.add(fmt::format("wheels_F_{}_lb", kSideName[side]));
+        c.truckSideWheelLoad.push_back(idx);
+        c.singleWheelLoad.push_back(idx);
+    }
+    for (int side : {0, 1}) c.wheelLift.push_back(c.add(fmt::format("wheel_lift_F1_{}_in", kSideName[side])));
+}
+
+void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out) const {
+    const Forces f = calcForces(t, y);
+    const RailState rail = rails_(t);
+    const double lb = units::lbf, in = units::inch, deg = units::degree;
+    out.clear();
+    out.push_back(y[3 * CarBody] / deg);
+    out.push_back((y[3 * CarBody + 2] - staticCarBodyZ_) / in);
+    out.push_back(y[3 * CarBody + 1] / in);
+    out.push_back((rail.z[1] - rail.z[0]) / in);
+    out.push_back((f.rim[0] + f.rim[1]) / lb);
+    for (int side : {0, 1}) out.push_back(f.sideBearing[side] / lb);
+    for (int side : {0, 1}) {
+        const BristleFrictionState& v = f.wedge[2 * side + kWedgeVertical];
+        const BristleFrictionState& h = f.wedge[2 * side + kWedgeLateral];
+        out.push_back(f.spring[side] / lb);
+        out.push_back(f.lateralSpring[side] / lb);
+        out.push_back(v.force / lb);
+        out.push_back(v.slipping ? 1 : 0);
+        out.push_back(h.force / lb);
+        out.push_back(h.slipping ? 1 : 0);
+    }
+    out.push_back(y[3 * Bolster] / deg);
+    out.push_back(y[3 * Bolster + 1] / in);
+    for (int side : {0, 1}) out.push_back(f.wheel[side] / lb);
+    for (int side : {0, 1}) out.push_back(f.wheelLift[side] / in);
+}
+
+std::vector<std::string> EomHalfCarModel::getStateNames() const {
+    std::vector<std::string> names;
+    const char* bodies[] = {"car_body", "bolster", "wheelset"};
+    const char* coords[] = {"roll", "y", "z"};
+    for (const char* rate : {"", "_rate"})
+        for (const char* b : bodies)
+            for (const char* q : coords) names.push_back(fmt::format("{}_{}{}", b, q, rate));
+    for (int side : {0, 1})
+        for (const char* dir : {"vertical", "lateral"}) names.push_back(fmt::format("wedge_{}_{}_w", dir, kSideName[side]));
+    return names;
+}
+
+RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, double speed, double wheelbase) {
+    return [track, speed, wheelbase](double t) {
+        RailState r;
+        for (double s0 : {0.0, -wheelbase}) {
+            const RailPoint p = track.calcRails(speed * t + s0);
+            for (int i = 0; i < 2; ++i) {
+                r.z[i] += 0.5 * p.z[i];
+                r.zDot[i] += 0.5 * p.slope[i] * speed;
+            }
+        }
+        return r;
+    };
+}
+
+RailStateFunction makeSinusoidalCrossLevel(double amplitude, double omega) {
+    return [amplitude, omega](double t) {
+        const double c = amplitude * std::sin(omega * t), cDot = amplitude * omega * std::cos(omega * t);
+        RailState r;
+        r.z = {-c / 2, c / 2};  // cross-level = right − left
+        r.zDot = {-cDot / 2, cDot / 2};
+        return r;
+    };
+}
+
+}  // namespace rockroll

@@ -1,0 +1,56 @@
+#pragma once
+// Variable-step, variable-order BDF integration of y' = f(t, y) for the
+// hand-written models, on SUNDIALS CVODE (Debian's libsundials-dev) with a dense
+// direct linear solver and a difference-quotient Jacobian. BDF copes with the
+// stiff contacts and bristle friction; explicit Runge–Kutta does not.
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+/// Thrown when CVODE fails; what() names the time and the state.
+class IntegrationFailure : public std::runtime_error {
+public:
+    IntegrationFailure(const std::string& what, double time) : std::runtime_error(what), time_(time) {}
+    double getTime() const { return time_; }
+
+private:
+    double time_;
+};
+
+class StiffIntegrator {
+public:
+    using Rhs = std::function<void(double t, const double* y, double* yDot)>;
+
+    /// relTol: relative tolerance; absTol: absolute tolerance per component.
+    StiffIntegrator(int n, Rhs rhs, double relTol, std::vector<double> absTol);
+    ~StiffIntegrator();
+    StiffIntegrator(const StiffIntegrator&) = delete;
+    StiffIntegrator& operator=(const StiffIntegrator&) = delete;
+
+    void initialize(double t0, const double* y0);
+    /// Integrates to tOut (interpolated output); throws IntegrationFailure.
+    void advanceTo(double tOut);
+    double getTime() const { return t_; }
+    const std::vector<double>& getState() const { return y_; }
+    long getNumSteps() const;
+    long getNumRhsEvaluations() const;
+    void setStateNames(std::vector<std::string> names) { names_ = std::move(names); }
+
+    struct Impl;  ///< CVODE's objects
+
+private:
+    std::string describeState() const;
+
+    std::unique_ptr<Impl> impl_;
+    int n_;
+    Rhs rhs_;
+    double t_ = 0;
+    std::vector<double> y_;
+    std::vector<std::string> names_;
+};
+
+}  // namespace rockroll
