@@ -1,0 +1,44 @@
+#pragma once
+// Fourier coefficients of the describing function's nonlinear forces, exact.
+//
+// Every element force of the §4.1 model is a function of one relative
+// displacement d(τ) and its rate ḋ = ω·d'(τ), where d is a trig polynomial
+// (mean + two harmonics of the positions, plus the input):
+//   piecewise linear:  f = α_i + β_i·d + γ·ḋ   on segment i between breakpoints;
+//   Coulomb:           f = −F_c·sign(ḋ).
+// Between the zero crossings of d − breakpoint (or of ḋ) the integrand f·w·cos kτ
+// is a trig polynomial, so each Fourier integral (report eq. 22)
+//   F₀ = 1/2π ∫ f·w dτ,   C_k = 1/π ∫ f·w·cos kτ dτ,   D_k = 1/π ∫ f·w·sin kτ dτ
+// is a finite sum of closed-form integrals. The weight w(τ) (1, or a roll angle
+// for the moment of a force whose arm turns with the body) is a trig polynomial too.
+#include "bespoke/TrigSeries.h"
+
+#include <vector>
+
+namespace rockroll {
+
+struct PiecewiseLinearLaw {
+    std::vector<double> breakpoints;  ///< ascending; n breakpoints make n + 1 segments
+    std::vector<double> alpha, beta;  ///< per segment: f = α + β·d
+    double viscous = 0;               ///< γ, on every segment
+    double evaluate(double d, double dDot) const;
+};
+
+struct CoulombLaw {
+    double limit = 0;  ///< F_c: f = −F_c·sign(ḋ)
+    double evaluate(double dDot) const { return dDot > 0 ? -limit : (dDot < 0 ? limit : 0.0); }
+};
+
+/// Fourier coefficients up to `harmonics` of f(d(τ), ω·d'(τ))·w(τ), exact.
+TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
+                              int harmonics);
+TrigSeries calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
+                              int harmonics);
+
+/// The same coefficients by the midpoint rule on n points (for checking).
+TrigSeries calcForceHarmonicsNumerically(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,
+                                         const TrigSeries& w, int harmonics, int n);
+TrigSeries calcForceHarmonicsNumerically(const CoulombLaw& law, const TrigSeries& d, double omega,
+                                         const TrigSeries& w, int harmonics, int n);
+
+}  // namespace rockroll

@@ -1,0 +1,52 @@
+#pragma once
+// A real trigonometric polynomial in τ = ω t,
+//
+//     s(τ) = c₀ + Σ_{k=1..N} (a_k cos kτ + b_k sin kτ),
+//
+// with the exact operations the describing function needs: sums, products
+// (degree adds), the τ-derivative, the integral over any interval, and every
+// root of s(τ) = level in [0, 2π).
+#include <vector>
+
+namespace rockroll {
+
+class TrigSeries {
+public:
+    TrigSeries() : c_(1, 0.0) {}
+    explicit TrigSeries(int degree) : c_(2 * degree + 1, 0.0) {}
+    static TrigSeries constant(double c0) {
+        TrigSeries s;
+        s.c_[0] = c0;
+        return s;
+    }
+    static TrigSeries cosine(int k, double amplitude = 1);
+    static TrigSeries sine(int k, double amplitude = 1);
+
+    int getDegree() const { return int(c_.size() - 1) / 2; }
+    double getMean() const { return c_[0]; }
+    double getCos(int k) const { return k <= getDegree() ? c_[2 * k - 1] : 0.0; }
+    double getSin(int k) const { return k <= getDegree() ? c_[2 * k] : 0.0; }
+    double& updMean() { return c_[0]; }
+    double& updCos(int k);
+    double& updSin(int k);
+
+    double evaluate(double tau) const;
+    TrigSeries derivative() const;  ///< ds/dτ
+    /// ∫ s(τ) dτ over [t0, t1], exactly.
+    double integrate(double t0, double t1) const;
+    /// Every τ in [0, 2π) with s(τ) = level, ascending (tangencies may be missed).
+    std::vector<double> findRoots(double level = 0) const;
+
+    TrigSeries& operator+=(const TrigSeries& o);
+    TrigSeries& operator*=(double x);
+    friend TrigSeries operator+(TrigSeries a, const TrigSeries& b) { return a += b; }
+    friend TrigSeries operator*(TrigSeries a, double x) { return a *= x; }
+    friend TrigSeries operator*(double x, TrigSeries a) { return a *= x; }
+    friend TrigSeries operator*(const TrigSeries& a, const TrigSeries& b);
+
+private:
+    void grow(int degree);
+    std::vector<double> c_;  ///< c₀, a₁, b₁, a₂, b₂, …
+};
+
+}  // namespace rockroll

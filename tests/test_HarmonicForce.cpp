@@ -1,0 +1,97 @@
+// Trig polynomials and the exact Fourier coefficients of piecewise-linear and
+// Coulomb forces, checked against numerical quadrature.
+#include "bespoke/HarmonicForce.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace { constexpr double kPi = 3.14159265358979323846; }
+
+using namespace rockroll;
+
+namespace {
+TrigSeries makeSeries(double c0, double a1, double b1, double a2, double b2) {
+    TrigSeries s(2);
+    s.updMean() = c0;
+    s.updCos(1) = a1;
+    s.updSin(1) = b1;
+    s.updCos(2) = a2;
+    s.updSin(2) = b2;
+    return s;
+}
+void expectSameCoefficients(const TrigSeries& a, const TrigSeries& b, double tol) {
+    EXPECT_NEAR(a.getMean(), b.getMean(), tol);
+    for (int k = 1; k <= 2; ++k) {
+        EXPECT_NEAR(a.getCos(k), b.getCos(k), tol) << "cos " << k;
+        EXPECT_NEAR(a.getSin(k), b.getSin(k), tol) << "sin " << k;
+    }
+}
+}  // namespace
+
+TEST(TrigSeries, ProductDerivativeAndIntegralAreExact) {
+    const TrigSeries a = makeSeries(0.3, 1.1, -0.4, 0.25, 0.6), b = makeSeries(-0.2, 0.5, 0.9, -0.7, 0.1);
+    const TrigSeries p = a * b;
+    const TrigSeries d = a.derivative();
+    for (double t : {0.0, 0.7, 2.1, 4.4, 6.0}) {
+        EXPECT_NEAR(p.evaluate(t), a.evaluate(t) * b.evaluate(t), 1e-13);
+        const double h = 1e-6;
+        EXPECT_NEAR(d.evaluate(t), (a.evaluate(t + h) - a.evaluate(t - h)) / (2 * h), 1e-8);
+    }
+    double sum = 0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) sum += p.evaluate(0.5 + (i + 0.5) * 2.0 / n) * 2.0 / n;
+    EXPECT_NEAR(p.integrate(0.5, 2.5), sum, 1e-9);
+}
+
+TEST(TrigSeries, FindsEveryCrossing) {
+    const auto r = TrigSeries::cosine(1).findRoots(0.5);
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_NEAR(r[0], kPi / 3, 1e-12);
+    EXPECT_NEAR(r[1], 5 * kPi / 3, 1e-12);
+    // Second harmonic dominant: four crossings.
+    const TrigSeries s = makeSeries(0.1, 0.2, 0.0, 1.0, 0.3);
+    const auto r2 = s.findRoots(0);
+    ASSERT_EQ(r2.size(), 4u);
+    for (double t : r2) EXPECT_NEAR(s.evaluate(t), 0.0, 1e-12);
+    EXPECT_TRUE(TrigSeries::constant(2).findRoots(0).empty());
+    EXPECT_TRUE(TrigSeries::cosine(1).findRoots(1.5).empty());
+}
+
+TEST(HarmonicForce, UnilateralContactMatchesQuadrature) {
+    // Contact f = k·max(0, −d − c) (side bearing with clearance c), d with two harmonics.
+    const double k = 1e7, c = 0.004;
+    PiecewiseLinearLaw law{{-c}, {-k * c, 0.0}, {-k, 0.0}, 0.0};
+    const TrigSeries d = makeSeries(-0.001, 0.006, 0.002, 0.0015, -0.001);
+    const TrigSeries exact = calcForceHarmonics(law, d, 3.0, TrigSeries::constant(1), 2);
+    const TrigSeries quad = calcForceHarmonicsNumerically(law, d, 3.0, TrigSeries::constant(1), 2, 400000);
+    ASSERT_GT(std::abs(exact.getCos(1)), 1e3);
+    expectSameCoefficients(exact, quad, 1e-6 * k * c);
+    // Open all the time: zero force.
+    const TrigSeries open = calcForceHarmonics(law, makeSeries(0.01, 0.001, 0, 0, 0), 3.0, TrigSeries::constant(1), 2);
+    expectSameCoefficients(open, TrigSeries(2), 0.0);
+}
+
+TEST(HarmonicForce, WeightedAndViscousLawsMatchQuadrature) {
+    // Bilinear spring with viscous term, times a roll-angle weight (moment arm).
+    PiecewiseLinearLaw law{{0.0}, {0.0, 0.0}, {1e5, 4e6}, 2e3};
+    const TrigSeries d = makeSeries(0.0005, 0.002, -0.001, 0.0007, 0.0003);
+    const TrigSeries w = makeSeries(0.01, 0.05, 0.02, -0.01, 0.004);
+    const TrigSeries exact = calcForceHarmonics(law, d, 4.0, w, 2);
+    const TrigSeries quad = calcForceHarmonicsNumerically(law, d, 4.0, w, 2, 400000);
+    expectSameCoefficients(exact, quad, 1e-5);
+}
+
+TEST(HarmonicForce, CoulombMatchesQuadratureAndTheClassicalDescribingFunction) {
+    CoulombLaw law{4000};
+    const TrigSeries d = makeSeries(0.2, 0.01, 0.004, 0.003, -0.002);
+    const TrigSeries exact = calcForceHarmonics(law, d, 2.0, TrigSeries::constant(1), 2);
+    const TrigSeries quad = calcForceHarmonicsNumerically(law, d, 2.0, TrigSeries::constant(1), 2, 400000);
+    // The midpoint rule on a step is only first order: error ~ F_c·h/π ≈ 0.06 N here.
+    expectSameCoefficients(exact, quad, 0.1);
+    // Pure sine displacement d = X sin τ: the Coulomb force's fundamental is −(4F_c/π)·cos τ.
+    const TrigSeries pure = calcForceHarmonics(law, TrigSeries::sine(1, 0.01), 2.0, TrigSeries::constant(1), 2);
+    EXPECT_NEAR(pure.getCos(1), -4 * 4000 / kPi, 1e-9);
+    EXPECT_NEAR(pure.getSin(1), 0.0, 1e-9);
+    EXPECT_NEAR(pure.getMean(), 0.0, 1e-9);
+}
