@@ -1,5 +1,6 @@
 #include "app/Commands.h"
 
+#include "bespoke/DescribingFunction.h"
 #include "scenarios/ScenarioRun.h"
 
 #include <cstdio>
@@ -128,6 +129,63 @@ int runCommand(const RunOptions& o) {
         printSummary(run.summary, sc);
         fmt::print("  wrote {} and {}\n", (dir / "history.csv").string(), (dir / "summary.json").string());
     }
+    return 0;
+}
+
+int steadyCommand(const SteadyOptions& o) {
+    Scenario sc = loadScenarioFile(o.scenario);
+    if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
+    if (!(o.toMph > o.fromMph)) throw std::invalid_argument("--to-mph must exceed --from-mph");
+    const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
+                                                                        sc.track.railLength);
+    const DescribingFunctionModel model(sc.car, C, sc.track.railLength);
+    ContinuationSettings settings;
+    settings.fromMph = o.fromMph;
+    settings.toMph = o.toMph;
+    settings.computeStability = o.stability;
+    const auto branches = model.trace(settings);
+    if (branches.empty()) throw std::runtime_error(fmt::format("no harmonic-balance solution found at {} mph", o.fromMph));
+
+    const std::string inputNote = fmt::format(
+        "sinusoidal cross-level of amplitude {:.4f} in: the fundamental harmonic 8A/(3 pi) cos(pi wheelbase/L_r) "
+        "of the {:.3f} in rectified-sine cross-level averaged over the wheelbase",
+        C / units::inch, sc.track.amplitude / units::inch);
+    if (o.json) {
+        nlohmann::ordered_json j;
+        j["car"] = sc.car.name;
+        j["amplitude_in"] = sc.track.amplitude / units::inch;
+        j["input_amplitude_in"] = C / units::inch;
+        j["input"] = inputNote;
+        j["model"] = "describing function (half car, report 4.1 simplifications)";
+        j["stability"] = o.stability ? "Floquet multipliers of the time-domain twin over one period" : "not computed";
+        j["branches"] = nlohmann::ordered_json::array();
+        for (const auto& b : branches) {
+            nlohmann::ordered_json jb;
+            jb["stable"] = b.stable;
+            jb["points"] = nlohmann::ordered_json::array();
+            for (const auto& p : b.points)
+                jb["points"].push_back({{"speed_mph", p.speedMph},
+                                        {"roll_amplitude_deg", p.rollAmplitudeDeg},
+                                        {"wheel_lift_fraction", p.wheelLiftFraction},
+                                        {"max_wheel_load_lb", p.maxWheelLoadLb},
+                                        {"max_side_bearing_load_lb", p.maxSideBearingLoadLb},
+                                        {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
+                                        {"max_floquet_multiplier",
+                                         std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
+                                                                               : nlohmann::ordered_json(nullptr)}});
+            j["branches"].push_back(jb);
+        }
+        fmt::print("{}\n", j.dump());
+        return 0;
+    }
+    fmt::print("rockroll steady — describing function, {} car\ninput: {}\n\n", sc.car.name, inputNote);
+    fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>8}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
+               "side brg lb", "|mu|max", "stable");
+    for (const auto& b : branches)
+        for (const auto& p : b.points)
+            fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>8}\n", p.speedMph, p.rollAmplitudeDeg,
+                       p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
+                       b.stable ? "yes" : "no");
     return 0;
 }
 

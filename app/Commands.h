@@ -13,7 +13,16 @@ struct RunOptions {
     bool json = false;
 };
 
+struct SteadyOptions {
+    std::string scenario;
+    std::optional<double> amplitudeIn;
+    double fromMph = 10, toMph = 22;
+    bool json = false;
+    bool stability = true;
+};
+
 int runDefaultCase();
+int steadyCommand(const SteadyOptions& options);
 int runCommand(const RunOptions& options);
 
 }  // namespace rockroll::app

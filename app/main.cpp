@@ -25,9 +25,21 @@ int main(int argc, char** argv) {
     runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
 
+    app::SteadyOptions steady;
+    CLI::App* steadyCmd = cli.add_subcommand(
+        "steady", "describing-function steady state against speed (harmonic balance, arclength continuation)");
+    steadyCmd->add_option("scenario", steady.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
+    steadyCmd->add_option("--amplitude-in", steady.amplitudeIn, "cross-level amplitude A [in]")
+        ->check(CLI::PositiveNumber);
+    steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
+    steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
+    steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
+    steadyCmd->add_flag("!--no-stability", steady.stability, "skip the Floquet stability of each point");
+
     CLI11_PARSE(cli, argc, argv);
     try {
         if (runCmd->parsed()) return app::runCommand(run);
+        if (steadyCmd->parsed()) return app::steadyCommand(steady);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

@@ -14,22 +14,42 @@ int findSegment(const std::vector<double>& breakpoints, double d) {
     return int(std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin());
 }
 
-/// Integrates Q(τ)·{1, cos kτ, sin kτ} over [0, 2π) split at `cuts`, with Q on
-/// each piece given by integrandOn(midpoint).
-TrigSeries integratePiecewise(std::vector<double> cuts, int harmonics,
-                              const std::function<TrigSeries(double mid)>& integrandOn) {
+/// Integrates Q_j(τ)·{1, cos kτ, sin kτ} over [0, 2π) split at `cuts`, with
+/// Q_j = g(midpoint)·w_j on each piece.
+std::vector<TrigSeries> integratePiecewise(std::vector<double> cuts, int harmonics, const std::vector<TrigSeries>& weights,
+                                           const std::function<TrigSeries(double mid)>& lawOn) {
     cuts.push_back(0);
     cuts.push_back(2 * kPi);
     std::sort(cuts.begin(), cuts.end());
-    TrigSeries out(harmonics);
+    std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double t0 = cuts[i], t1 = cuts[i + 1];
         if (t1 - t0 <= 0) continue;
-        const TrigSeries Q = integrandOn(0.5 * (t0 + t1));
-        out.updMean() += Q.integrate(t0, t1) / (2 * kPi);
-        for (int k = 1; k <= harmonics; ++k) {
-            out.updCos(k) += (Q * TrigSeries::cosine(k)).integrate(t0, t1) / kPi;
-            out.updSin(k) += (Q * TrigSeries::sine(k)).integrate(t0, t1) / kPi;
+        const TrigSeries g = lawOn(0.5 * (t0 + t1));
+        for (size_t j = 0; j < weights.size(); ++j) {
+            const TrigSeries Q = g * weights[j];
+            out[j].updMean() += Q.integrate(t0, t1) / (2 * kPi);
+            for (int k = 1; k <= harmonics; ++k) {
+                out[j].updCos(k) += (Q * TrigSeries::cosine(k)).integrate(t0, t1) / kPi;
+                out[j].updSin(k) += (Q * TrigSeries::sine(k)).integrate(t0, t1) / kPi;
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, int harmonics,
+                                        const std::vector<TrigSeries>& weights) {
+    std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
+    for (const ForcePiece& p : pieces) {
+        if (p.t1 - p.t0 <= 0) continue;
+        for (size_t j = 0; j < weights.size(); ++j) {
+            const TrigSeries Q = p.force * weights[j];
+            out[j].updMean() += Q.integrate(p.t0, p.t1) / (2 * kPi);
+            for (int k = 1; k <= harmonics; ++k) {
+                out[j].updCos(k) += (Q * TrigSeries::cosine(k)).integrate(p.t0, p.t1) / kPi;
+                out[j].updSin(k) += (Q * TrigSeries::sine(k)).integrate(p.t0, p.t1) / kPi;
+            }
         }
     }
     return out;
@@ -55,23 +75,33 @@ double PiecewiseLinearLaw::evaluate(double d, double dDot) const {
     return alpha[i] + beta[i] * d + viscous * dDot;
 }
 
-TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
-                              int harmonics) {
+std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,
+                                           const std::vector<TrigSeries>& weights, int harmonics) {
     std::vector<double> cuts;
     for (double b : law.breakpoints)
         for (double r : d.findRoots(b)) cuts.push_back(r);
     const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(cuts, harmonics, [&](double mid) {
+    return integratePiecewise(cuts, harmonics, weights, [&](double mid) {
         const int i = findSegment(law.breakpoints, d.evaluate(mid));
-        return (TrigSeries::constant(law.alpha[i]) + d * law.beta[i] + rate * law.viscous) * w;
+        return TrigSeries::constant(law.alpha[i]) + d * law.beta[i] + rate * law.viscous;
     });
+}
+
+std::vector<TrigSeries> calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega,
+                                           const std::vector<TrigSeries>& weights, int harmonics) {
+    const TrigSeries rate = d.derivative() * omega;
+    return integratePiecewise(rate.findRoots(0), harmonics, weights,
+                              [&](double mid) { return TrigSeries::constant(law.evaluate(rate.evaluate(mid))); });
+}
+
+TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
+                              int harmonics) {
+    return calcForceHarmonics(law, d, omega, std::vector<TrigSeries>{w}, harmonics)[0];
 }
 
 TrigSeries calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
                               int harmonics) {
-    const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(rate.findRoots(0), harmonics,
-                              [&](double mid) { return w * law.evaluate(rate.evaluate(mid)); });
+    return calcForceHarmonics(law, d, omega, std::vector<TrigSeries>{w}, harmonics)[0];
 }
 
 TrigSeries calcForceHarmonicsNumerically(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,
@@ -87,6 +117,85 @@ TrigSeries calcForceHarmonicsNumerically(const CoulombLaw& law, const TrigSeries
     const TrigSeries rate = d.derivative() * omega;
     return integrateNumerically(harmonics, n,
                                 [&](double tau) { return law.evaluate(rate.evaluate(tau)) * w.evaluate(tau); });
+}
+
+std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d) {
+    const double k = law.stiffness, Fc = law.limit;
+    const std::vector<double> turning = d.derivative().findRoots(0);
+    if (turning.size() < 2) return {{0, 2 * kPi, TrigSeries::constant(0)}};
+    size_t iMax = 0, iMin = 0;
+    for (size_t i = 0; i < turning.size(); ++i) {
+        if (d.evaluate(turning[i]) > d.evaluate(turning[iMax])) iMax = i;
+        if (d.evaluate(turning[i]) < d.evaluate(turning[iMin])) iMin = i;
+    }
+    const double dMax = d.evaluate(turning[iMax]), dMin = d.evaluate(turning[iMin]);
+    if (dMax - dMin <= 2 * Fc / k)  // sticks all period, about mid-range
+        return {{0, 2 * kPi, TrigSeries::constant(k * 0.5 * (dMax + dMin)) + d * -k}};
+
+    std::vector<double> t;  // turning points from the global maximum, unwrapped
+    for (size_t i = 0; i < turning.size(); ++i) {
+        const double ti = turning[(iMax + i) % turning.size()];
+        t.push_back(ti < turning[iMax] ? ti + 2 * kPi : ti);
+    }
+    t.push_back(turning[iMax] + 2 * kPi);
+    std::vector<ForcePiece> pieces;
+    double fr = -Fc, dr = dMax;
+    for (size_t i = 0; i + 1 < t.size(); ++i) {
+        const double ta = t[i], tb = t[i + 1];
+        const bool down = d.evaluate(0.5 * (ta + tb)) < dr;
+        const double fLimit = down ? Fc : -Fc;
+        const double dSlip = dr + (fr - fLimit) / k;  // where f_r − k(d − d_r) = f_limit
+        const TrigSeries stick = TrigSeries::constant(fr + k * dr) + d * -k;
+        double tSlip = tb;
+        for (double r : d.findRoots(dSlip)) {
+            for (double cand : {r, r + 2 * kPi, r + 4 * kPi})
+                if (cand > ta && cand < tSlip) tSlip = cand;
+        }
+        pieces.push_back({ta, tSlip, stick});
+        if (tSlip < tb) {
+            pieces.push_back({tSlip, tb, TrigSeries::constant(fLimit)});
+            fr = fLimit;
+        } else {
+            fr = std::clamp(fr - k * (d.evaluate(tb) - dr), -Fc, Fc);
+        }
+        dr = d.evaluate(tb);
+    }
+    return pieces;
+}
+
+double evaluateHistory(const std::vector<ForcePiece>& pieces, double tau) {
+    const double start = pieces.front().t0;
+    double t = std::fmod(tau - start, 2 * kPi);
+    if (t < 0) t += 2 * kPi;
+    t += start;
+    for (const ForcePiece& p : pieces)
+        if (t >= p.t0 && t <= p.t1) return p.force.evaluate(t);
+    return pieces.back().force.evaluate(t);
+}
+
+std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const TrigSeries& d, double,
+                                           const std::vector<TrigSeries>& weights, int harmonics) {
+    return integratePieces(calcElastoPlasticHistory(law, d), harmonics, weights);
+}
+
+TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,
+                                         int harmonics, int n) {
+    const double h = 2 * kPi / n;
+    double f = 0, dPrev = d.evaluate(0);
+    TrigSeries out(harmonics);
+    for (int i = 0; i < 2 * n; ++i) {
+        const double tau = (i + 0.5) * h, dNow = d.evaluate(tau);
+        f = std::clamp(f - law.stiffness * (dNow - dPrev), -law.limit, law.limit);
+        dPrev = dNow;
+        if (i < n) continue;
+        const double v = f * w.evaluate(tau) * h;
+        out.updMean() += v / (2 * kPi);
+        for (int k = 1; k <= harmonics; ++k) {
+            out.updCos(k) += v * std::cos(k * tau) / kPi;
+            out.updSin(k) += v * std::sin(k * tau) / kPi;
+        }
+    }
+    return out;
 }
 
 }  // namespace rockroll

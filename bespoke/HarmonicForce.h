@@ -29,11 +29,43 @@ struct CoulombLaw {
     double evaluate(double dDot) const { return dDot > 0 ? -limit : (dDot < 0 ? limit : 0.0); }
 };
 
+/// Coulomb friction with stick: an elasto-plastic element (stiffness k_b in
+/// series with a slider of limit F_c), the steady periodic hysteresis for d(τ).
+/// Between turning points of d it sticks (f = f_r − k_b·(d − d_r), linear in d)
+/// until |f| reaches F_c, then slides (f = ∓F_c); starting at the global maximum
+/// of d (arrived at sliding, f = −F_c) the loop closes after one period. If the
+/// range of d is below 2F_c/k_b it sticks throughout, about the mid-range.
+struct ElastoPlasticLaw {
+    double limit = 0;      ///< F_c
+    double stiffness = 0;  ///< k_b
+};
+
+/// One piece of a piecewise force history: f(τ) = series on [t0, t1] (t may exceed 2π).
+struct ForcePiece {
+    double t0 = 0, t1 = 0;
+    TrigSeries force;
+};
+std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d);
+double evaluateHistory(const std::vector<ForcePiece>& pieces, double tau);
+
 /// Fourier coefficients up to `harmonics` of f(d(τ), ω·d'(τ))·w(τ), exact.
 TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
                               int harmonics);
 TrigSeries calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
                               int harmonics);
+
+/// The same for several weights at once (one root search): one series per weight.
+std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,
+                                           const std::vector<TrigSeries>& weights, int harmonics);
+std::vector<TrigSeries> calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega,
+                                           const std::vector<TrigSeries>& weights, int harmonics);
+
+std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const TrigSeries& d, double omega,
+                                           const std::vector<TrigSeries>& weights, int harmonics);
+/// Steps the elasto-plastic law through two periods on n points and takes the
+/// coefficients of the second by the midpoint rule (for checking).
+TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,
+                                         int harmonics, int n);
 
 /// The same coefficients by the midpoint rule on n points (for checking).
 TrigSeries calcForceHarmonicsNumerically(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,

@@ -95,3 +95,25 @@ TEST(HarmonicForce, CoulombMatchesQuadratureAndTheClassicalDescribingFunction) {
     EXPECT_NEAR(pure.getSin(1), 0.0, 1e-9);
     EXPECT_NEAR(pure.getMean(), 0.0, 1e-9);
 }
+
+TEST(HarmonicForce, ElastoPlasticFrictionMatchesSteppedHysteresis) {
+    const ElastoPlasticLaw law{4000, 4000 / 2.5e-4};
+    // Slides (range ≫ 2F_c/k_b), with a second harmonic that makes a minor loop.
+    const TrigSeries d = makeSeries(0.01, 0.004, 0.002, 0.0012, -0.0018);
+    const TrigSeries w = makeSeries(0.01, 0.05, 0.02, -0.01, 0.004);
+    for (const TrigSeries& weight : {TrigSeries::constant(1), w}) {
+        const TrigSeries exact = calcForceHarmonics(law, d, 2.0, std::vector<TrigSeries>{weight}, 2)[0];
+        const TrigSeries stepped = calcForceHarmonicsNumerically(law, d, weight, 2, 400000);
+        expectSameCoefficients(exact, stepped, 0.1);
+    }
+    // Large amplitude: tends to the ideal Coulomb element.
+    const TrigSeries big = TrigSeries::sine(1, 0.05);
+    const TrigSeries ep = calcForceHarmonics(law, big, 2.0, std::vector<TrigSeries>{TrigSeries::constant(1)}, 2)[0];
+    const TrigSeries coulomb = calcForceHarmonics(CoulombLaw{4000}, big, 2.0, TrigSeries::constant(1), 2);
+    EXPECT_NEAR(std::hypot(ep.getCos(1), ep.getSin(1)), std::hypot(coulomb.getCos(1), coulomb.getSin(1)), 0.02 * 4000);
+    // Small amplitude: sticks, a linear spring about mid-range (no creep, no mean force).
+    const TrigSeries small = makeSeries(0.3, 1e-5, 0, 0, 0);
+    const TrigSeries st = calcForceHarmonics(law, small, 2.0, std::vector<TrigSeries>{TrigSeries::constant(1)}, 2)[0];
+    EXPECT_NEAR(st.getMean(), 0.0, 1e-9);
+    EXPECT_NEAR(st.getCos(1), -law.stiffness * 1e-5, 1e-6);
+}

@@ -1,0 +1,397 @@
+#include "bespoke/DescribingFunction.h"
+
+#include "bespoke/EomSimulation.h"
+#include "bespoke/StiffIntegrator.h"
+#include "mbmodel/Units.h"
+
+#include <unsupported/Eigen/NonLinearOptimization>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+
+namespace rockroll {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr double kUnknownScale = 1e-3;  // unknowns in mm and mrad
+constexpr double kForceScale = 1e4;     // residuals in 10 kN and 10 kN·m
+constexpr int kSamples = 720;           // per period, for output maxima
+constexpr int kAxisY = 1, kAxisZ = 2;
+
+PiecewiseLinearLaw makeLinear(double stiffness, double damping) {
+    // f = −k·d − c·ḋ
+    return {{}, {0.0}, {-stiffness}, -damping};
+}
+
+PiecewiseLinearLaw makeCompressionOnly(double stiffness, double clearance) {
+    // Penetration δ = −d − clearance; f = k·max(0, δ).
+    return {{-clearance}, {-stiffness * clearance, 0.0}, {-stiffness, 0.0}, 0.0};
+}
+
+double criticalDamping(double k, double m, double zeta) { return 2 * zeta * std::sqrt(k * m); }
+
+/// Eigen's HybridNonLinearSolver functor around any residual function.
+struct ResidualFunctor {
+    std::function<Eigen::VectorXd(const Eigen::VectorXd&)> f;
+    int n = 0;
+    int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) const {
+        fvec = f(x);
+        return 0;
+    }
+    int inputs() const { return n; }
+    int values() const { return n; }
+};
+
+std::optional<Eigen::VectorXd> solvePowell(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
+                                           Eigen::VectorXd x, double tolerance, int* evaluations = nullptr) {
+    ResidualFunctor functor{f, int(x.size())};
+    Eigen::HybridNonLinearSolver<ResidualFunctor> solver(functor);
+    solver.parameters.maxfev = 60 * (x.size() + 1);
+    solver.parameters.xtol = 1e-12;
+    // Forward differences over ~1e-5 relative: wide enough to see the Coulomb
+    // forces' switching times move smoothly.
+    solver.parameters.epsfcn = 1e-10;
+    solver.diag.setConstant(x.size(), 1.0);
+    solver.useExternalScaling = true;
+    const auto status = solver.solveNumericalDiff(x);
+    if (evaluations) *evaluations = int(solver.nfev);
+    const Eigen::VectorXd r = f(x);
+    if (std::getenv("RR_DEBUG")) fprintf(stderr, "powell status %d nfev %d norm %g\n", int(status), int(solver.nfev), r.norm());
+    if (!r.allFinite() || r.norm() > tolerance) return std::nullopt;
+    return x;
+}
+
+Eigen::MatrixXd calcJacobian(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f, const Eigen::VectorXd& x,
+                             int rows) {
+    Eigen::MatrixXd J(rows, x.size());
+    const Eigen::VectorXd f0 = f(x);
+    for (int i = 0; i < x.size(); ++i) {
+        Eigen::VectorXd xp = x;
+        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+        xp[i] += h;
+        J.col(i) = (f(xp) - f0) / h;
+    }
+    return J;
+}
+}  // namespace
+
+DescribingFunctionModel::DescribingFunctionModel(const CarParameters& car, double crossLevelAmplitude,
+                                                 double railLength)
+    : car_(car), inputAmplitude_(crossLevelAmplitude), railLength_(railLength),
+      reference_(car, [](double) { return RailState{}; }, EomSimplifications::describingFunctionTwin()) {
+    buildElements();
+}
+
+double DescribingFunctionModel::calcFundamentalCrossLevel(double A, double wheelbase, double railLength) {
+    return 8 * A / (3 * kPi) * std::cos(kPi * wheelbase / railLength);
+}
+
+double DescribingFunctionModel::calcOmega(double speedMph) const {
+    return 2 * kPi * speedMph * units::mph / railLength_;
+}
+
+void DescribingFunctionModel::buildElements() {
+    using M = EomHalfCarModel;
+    const auto& g = reference_.getGeometry();
+    const auto& L = reference_.getLaws();
+    const Eigen::Vector2d zero(0, 0);
+    for (int side : {0, 1}) {
+        const Eigen::Vector2d rim((side == 0 ? 1 : -1) * g.rimRadius, 0);
+        elements_.push_back({kAxisZ, M::CarBody, g.plateOnCarBody + rim, M::Bolster, g.bowlOnBolster + rim, -1,
+                             makeCompressionOnly(L.rim.stiffness, 0), "rim"});
+        elements_.push_back({kAxisZ, M::CarBody, g.padOnCarBody[side], M::Bolster, g.bearingOnBolster[side], -1,
+                             makeCompressionOnly(L.sideBearing.stiffness, L.sideBearingClearance), "side_bearing"});
+        elements_.push_back({kAxisZ, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
+                             makeLinear(L.spring.rate, 0), "spring"});
+        const double cLock = criticalDamping(L.lateral.rate, reference_.getMass(M::Bolster) / 2,
+                                             car_.lateralContactDampingRatio);
+        elements_.push_back({kAxisY, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
+                             makeLinear(L.lateral.rate, cLock), "lateral_lock"});
+        elements_.push_back({kAxisZ, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
+                             CoulombLaw{L.wedgeVertical.limit}, "wedge"});
+        elements_.push_back({kAxisZ, M::Wheelset, g.tread[side], -1, zero, side,
+                             makeCompressionOnly(L.wheelVertical.stiffness, 0), "wheel"});
+        elements_.push_back({kAxisY, M::Wheelset, g.tread[side], -1, Eigen::Vector2d(g.railY[side], 0), side,
+                             makeLinear(0.5 * L.wheelLateralStiffness, 0.5 * L.wheelLateralDamping), "wheel_lateral"});
+    }
+    elements_.push_back({kAxisY, M::CarBody, g.plateOnCarBody, M::Bolster, g.bowlOnBolster, -1,
+                         makeLinear(L.pinStiffness, L.pinDamping), "pin"});
+}
+
+std::vector<TrigSeries> DescribingFunctionModel::getPositions(const Eigen::VectorXd& x) const {
+    std::vector<TrigSeries> q(EomHalfCarModel::kNumDofs, TrigSeries(kHarmonics));
+    for (int j = 0; j < EomHalfCarModel::kNumDofs; ++j) {
+        q[j].updMean() = kUnknownScale * x[kCoefficients * j];
+        for (int k = 1; k <= kHarmonics; ++k) {
+            q[j].updCos(k) = kUnknownScale * x[kCoefficients * j + 2 * k - 1];
+            q[j].updSin(k) = kUnknownScale * x[kCoefficients * j + 2 * k];
+        }
+    }
+    return q;
+}
+
+TrigSeries DescribingFunctionModel::calcStationSeries(const std::vector<TrigSeries>& q, int body,
+                                                      const Eigen::Vector2d& p, int axis) const {
+    // Small angles: x_y = y + p_y − θ·p_z,  x_z = z + p_z + θ·p_y.
+    const TrigSeries& th = q[3 * body];
+    if (axis == kAxisY) return q[3 * body + 1] + TrigSeries::constant(p.x()) + th * (-p.y());
+    return q[3 * body + 2] + TrigSeries::constant(p.y()) + th * p.x();
+}
+
+TrigSeries DescribingFunctionModel::calcRailSeries(int side, int axis) const {
+    if (axis == kAxisY) return TrigSeries::constant(reference_.getGeometry().railY[side]);
+    return TrigSeries::sine(1, (side == 0 ? -0.5 : 0.5) * inputAmplitude_);  // rails at ∓c/2
+}
+
+TrigSeries DescribingFunctionModel::calcRelative(const std::vector<TrigSeries>& q, const Element& e) const {
+    const TrigSeries a = calcStationSeries(q, e.bodyA, e.pA, e.axis);
+    const TrigSeries b = e.bodyB >= 0 ? calcStationSeries(q, e.bodyB, e.pB, e.axis)
+                                      : (e.axis == kAxisY ? TrigSeries::constant(e.pB.x()) : calcRailSeries(e.railSide, e.axis));
+    return a + b * -1.0;
+}
+
+Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, double speedMph) const {
+    using M = EomHalfCarModel;
+    const double omega = calcOmega(speedMph);
+    const std::vector<TrigSeries> q = getPositions(x);
+    std::vector<TrigSeries> Q(M::kNumDofs, TrigSeries(kHarmonics));
+    for (int b = 0; b < M::kNumBodies; ++b) Q[3 * b + 2].updMean() -= reference_.getMass(b) * units::g;
+
+    // Moment of f along `axis` at p on a body rolled by θ (small angles):
+    //   z: (p_y − θ p_z)·f,   y: −(p_z + θ p_y)·f.
+    auto addMoment = [](TrigSeries& Qth, int axis, const Eigen::Vector2d& p, const TrigSeries& f,
+                        const TrigSeries& thetaF, double sign) {
+        if (axis == kAxisZ) Qth += (f * p.x() + thetaF * -p.y()) * sign;
+        else Qth += (f * -p.y() + thetaF * -p.x()) * sign;
+    };
+    for (const Element& e : elements_) {
+        const TrigSeries d = calcRelative(q, e);
+        std::vector<TrigSeries> weights{TrigSeries::constant(1), q[3 * e.bodyA]};
+        if (e.bodyB >= 0) weights.push_back(q[3 * e.bodyB]);
+        const std::vector<TrigSeries> H = std::visit(
+            [&](const auto& law) { return calcForceHarmonics(law, d, omega, weights, kHarmonics); }, e.law);
+        Q[3 * e.bodyA + e.axis] += H[0];
+        addMoment(Q[3 * e.bodyA], e.axis, e.pA, H[0], H[1], +1);
+        if (e.bodyB >= 0) {
+            Q[3 * e.bodyB + e.axis] += H[0] * -1.0;
+            addMoment(Q[3 * e.bodyB], e.axis, e.pB, H[0], H[2], -1);
+        }
+    }
+    Eigen::VectorXd r(kNumUnknowns);
+    for (int j = 0; j < M::kNumDofs; ++j) {
+        const int body = j / 3;
+        const double mass = j % 3 == 0 ? reference_.getInertia(body) : reference_.getMass(body);
+        r[kCoefficients * j] = -Q[j].getMean() / kForceScale;
+        for (int k = 1; k <= kHarmonics; ++k) {
+            const double w2 = (k * omega) * (k * omega);
+            r[kCoefficients * j + 2 * k - 1] = (-w2 * mass * q[j].getCos(k) - Q[j].getCos(k)) / kForceScale;
+            r[kCoefficients * j + 2 * k] = (-w2 * mass * q[j].getSin(k) - Q[j].getSin(k)) / kForceScale;
+        }
+    }
+    return r;
+}
+
+Eigen::VectorXd DescribingFunctionModel::makeStaticGuess() const {
+    const EomHalfCarModel::State y = reference_.makeStaticState();
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(kNumUnknowns);
+    for (int j = 0; j < EomHalfCarModel::kNumDofs; ++j) x[kCoefficients * j] = y[j] / kUnknownScale;
+    // Every body rolls with the rails (θ = −c/gauge, c = C·sin τ), about rail height.
+    const double theta = -inputAmplitude_ / car_.gauge;
+    for (int b = 0; b < EomHalfCarModel::kNumBodies; ++b) {
+        x[kCoefficients * (3 * b) + 2] = theta / kUnknownScale;
+        x[kCoefficients * (3 * b + 1) + 2] = -theta * y[3 * b + 2] / kUnknownScale;
+    }
+    return x;
+}
+
+std::optional<Eigen::VectorXd> DescribingFunctionModel::solve(double speedMph, const Eigen::VectorXd& guess) const {
+    return solvePowell([&](const Eigen::VectorXd& x) { return calcResidual(x, speedMph); }, guess, 1e-7);
+}
+
+std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double speedMph) const {
+    // Homotopy in the wedge friction: with F_c = 0 the balance is smooth; the
+    // friction is then raised to its value in steps, each from the last solution.
+    // (Raising the input amplitude instead fails: a Coulomb element's describing
+    // function is singular at zero slip amplitude.)
+    std::optional<Eigen::VectorXd> x = makeStaticGuess();
+    for (double scale : {0.0, 0.2, 0.4, 0.6, 0.8, 1.0}) {
+        CarParameters car = car_;
+        car.verticalFriction *= std::max(scale, 1e-6);
+        const DescribingFunctionModel step(car, inputAmplitude_, railLength_);
+        x = step.solve(speedMph, *x);
+        if (!x) return std::nullopt;
+    }
+    return x;
+}
+
+SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, double speedMph) const {
+    const double omega = calcOmega(speedMph);
+    const std::vector<TrigSeries> q = getPositions(x);
+    SteadyStatePoint p;
+    p.speedMph = speedMph;
+    p.harmonics = x;
+    double rollMin = 1e9, rollMax = -1e9, minPlate = 1e300;
+    int lifted = 0;
+    std::vector<TrigSeries> d(elements_.size()), rate(elements_.size());
+    for (size_t i = 0; i < elements_.size(); ++i) {
+        d[i] = calcRelative(q, elements_[i]);
+        rate[i] = d[i].derivative() * omega;
+    }
+    for (int s = 0; s < kSamples; ++s) {
+        const double tau = 2 * kPi * s / kSamples;
+        const double roll = q[0].evaluate(tau);
+        rollMin = std::min(rollMin, roll);
+        rollMax = std::max(rollMax, roll);
+        double plate = 0;
+        bool anyLift = false;
+        for (size_t i = 0; i < elements_.size(); ++i) {
+            const Element& e = elements_[i];
+            const auto* law = std::get_if<PiecewiseLinearLaw>(&e.law);
+            if (!law) continue;
+            const double f = law->evaluate(d[i].evaluate(tau), rate[i].evaluate(tau));
+            if (e.name == "wheel") {
+                p.maxWheelLoadLb = std::max(p.maxWheelLoadLb, f / units::lbf);
+                anyLift = anyLift || f <= 0;
+            } else if (e.name == "side_bearing") {
+                p.maxSideBearingLoadLb = std::max(p.maxSideBearingLoadLb, f / units::lbf);
+            } else if (e.name == "rim") {
+                plate += f;
+            }
+        }
+        minPlate = std::min(minPlate, plate);
+        lifted += anyLift ? 1 : 0;
+    }
+    p.rollAmplitudeDeg = 0.5 * (rollMax - rollMin) / units::degree;
+    p.wheelLiftFraction = double(lifted) / kSamples;
+    p.minCenterPlateLoadLb = minPlate / units::lbf;
+    p.maxFloquetMultiplier = std::numeric_limits<double>::quiet_NaN();
+    return p;
+}
+
+EomHalfCarModel DescribingFunctionModel::makeTwin(double speedMph) const {
+    return EomHalfCarModel(car_, makeSinusoidalCrossLevel(inputAmplitude_, calcOmega(speedMph)),
+                           EomSimplifications::describingFunctionTwin());
+}
+
+EomHalfCarModel::State DescribingFunctionModel::makeTwinState(const Eigen::VectorXd& x, double speedMph) const {
+    using M = EomHalfCarModel;
+    const double omega = calcOmega(speedMph);
+    const std::vector<TrigSeries> q = getPositions(x);
+    M::State y = M::State::Zero();
+    for (int j = 0; j < M::kNumDofs; ++j) {
+        y[j] = q[j].evaluate(0);
+        y[M::kNumDofs + j] = omega * q[j].derivative().evaluate(0);
+    }
+    // Sliding wedges sit at their limit deflection, on the side that opposes the slip.
+    const auto& L = reference_.getLaws();
+    int side = 0;
+    for (const Element& e : elements_)
+        if (e.name == "wedge") {
+            const double v = calcRelative(q, e).derivative().evaluate(0);
+            y[2 * M::kNumDofs + 2 * side] = (v > 0 ? 1 : (v < 0 ? -1 : 0)) * L.wedgeVertical.limit / L.wedgeVertical.stiffness;
+            ++side;
+        }
+    return y;
+}
+
+double DescribingFunctionModel::calcMaxFloquetMultiplier(const Eigen::VectorXd& x, double speedMph) const {
+    using M = EomHalfCarModel;
+    const EomHalfCarModel twin = makeTwin(speedMph);
+    const double period = 2 * kPi / calcOmega(speedMph);
+    const double accuracy = 1e-8;
+    StiffIntegrator integ(
+        M::kNumStates,
+        [&twin](double t, const double* y, double* yDot) {
+            M::State s = Eigen::Map<const M::State>(y), d;
+            twin.calcStateDerivative(t, s, d);
+            Eigen::Map<M::State> out(yDot);
+            out = d;
+        },
+        accuracy, getEomAbsoluteTolerances(accuracy));
+    auto flow = [&](const M::State& y0) {
+        integ.initialize(0, y0.data());
+        integ.advanceTo(period);
+        return M::State(Eigen::Map<const M::State>(integ.getState().data()));
+    };
+    const M::State y0 = makeTwinState(x, speedMph);
+    const M::State base = flow(y0);
+    Eigen::MatrixXd monodromy(M::kNumStates, M::kNumStates);
+    for (int i = 0; i < M::kNumStates; ++i) {
+        const double h = i < M::kNumDofs ? 1e-7 : (i < 2 * M::kNumDofs ? 1e-5 : 1e-8);
+        M::State yp = y0;
+        yp[i] += h;
+        monodromy.col(i) = (flow(yp) - base) / h;
+    }
+    return monodromy.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const ContinuationSettings& s) const {
+    // Unknowns u = [x (45, mm and mrad), V (mph)]; residual R(x, V) = 0 plus the
+    // arclength condition t·(u − u_pred) = 0, t the unit tangent (null vector of ∂R/∂u).
+    const int n = kNumUnknowns;
+    auto residualOf = [this](const Eigen::VectorXd& u) { return calcResidual(u.head(kNumUnknowns), u[kNumUnknowns]); };
+    auto tangentAt = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& previous) {
+        const Eigen::MatrixXd J = calcJacobian(residualOf, u, n);
+        Eigen::MatrixXd A(n + 1, n + 1);
+        A.topRows(n) = J;
+        A.row(n) = previous.transpose();
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
+        rhs[n] = 1;
+        Eigen::VectorXd t = A.fullPivLu().solve(rhs);
+        return Eigen::VectorXd(t / t.norm());
+    };
+
+    std::vector<SteadyStatePoint> points;
+    const std::optional<Eigen::VectorXd> start = solveFromRest(s.fromMph);
+    if (!start) return {};
+    Eigen::VectorXd u(n + 1);
+    u << *start, s.fromMph;
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
+    e[n] = 1;
+    Eigen::VectorXd t = tangentAt(u, e);
+    points.push_back(describe(u.head(n), u[n]));
+    double ds = s.initialStep;
+    while (int(points.size()) < s.maxPoints) {
+        const Eigen::VectorXd predicted = u + ds * t;
+        int evaluations = 0;
+        const auto corrected = solvePowell(
+            [&](const Eigen::VectorXd& v) {
+                Eigen::VectorXd r(n + 1);
+                r.head(n) = residualOf(v);
+                r[n] = t.dot(v - predicted);
+                return r;
+            },
+            predicted, 1e-7, &evaluations);
+        if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
+            ds *= 0.5;
+            if (ds < s.minStep) break;
+            continue;
+        }
+        u = *corrected;
+        t = tangentAt(u, t);
+        points.push_back(describe(u.head(n), u[n]));
+        if (u[n] > s.toMph || u[n] < s.fromMph - 1e-9) break;
+        if (evaluations < 8 * (n + 2)) ds = std::min(s.maxStep, ds * 1.5);
+    }
+
+    if (s.computeStability)
+        for (auto& p : points) {
+            try {
+                p.maxFloquetMultiplier = calcMaxFloquetMultiplier(p.harmonics, p.speedMph);
+                p.stable = p.maxFloquetMultiplier < 1 + 1e-3;
+            } catch (const IntegrationFailure&) {
+                p.stable = false;
+            }
+        }
+    std::vector<SteadyStateBranch> branches;
+    for (const auto& p : points) {
+        if (branches.empty() || branches.back().stable != p.stable) branches.push_back({p.stable, {}});
+        branches.back().points.push_back(p);
+    }
+    return branches;
+}
+
+}  // namespace rockroll

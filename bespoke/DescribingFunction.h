@@ -1,0 +1,110 @@
+#pragma once
+// Describing function (harmonic balance) steady state of the half car, report §4.
+//
+// Model: the equation-of-motion half car with every §4.1 simplification
+// (EomSimplifications::describingFunctionTwin(): linear springs, bolster locked
+// laterally to the side frames, elastic contacts, equal lateral shares, small
+// angles), so its time-domain twin is EomHalfCarModel with the same flags.
+// Input: a sinusoidal cross-level c(τ) = C·sin τ, τ = ωt, ω = 2πV/L_r, rails at
+// ∓c/2; C is the fundamental harmonic of the actual cross-level,
+//     C = (8A/3π)·cos(π·wheelbase/L_r)      (brief §5).
+// Ansatz: every position q_j(τ) = q_j0 + a_j1 cos τ + b_j1 sin τ + a_j2 cos 2τ + b_j2 sin 2τ.
+// Balance, per degree of freedom j and harmonic (report eq. 23):
+//     mean:  0 = Q_j0,     k = 1, 2:  −(kω)²·M_j·(a_jk, b_jk) = (Q_j,cos k, Q_j,sin k),
+// where Q_j are the Fourier coefficients of the generalized forces, exact from
+// the zero crossings (HarmonicForce.h). 9 positions × 5 coefficients = 45
+// equations, solved by Powell's hybrid method (Eigen's HybridNonLinearSolver)
+// and continued in speed by pseudo-arclength continuation. Stability: Floquet
+// multipliers of the time-domain twin over one period about the harmonic
+// solution (docs/bespoke.md).
+#include "bespoke/EomHalfCarModel.h"
+#include "bespoke/HarmonicForce.h"
+
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rockroll {
+
+struct SteadyStatePoint {
+    double speedMph = 0;
+    double rollAmplitudeDeg = 0;      ///< half peak-to-peak of car-body roll
+    double wheelLiftFraction = 0;     ///< fraction of the period with a wheel off its rail
+    double maxWheelLoadLb = 0;        ///< equivalent wheelset wheel = two wheels, one truck side
+    double maxSideBearingLoadLb = 0;
+    double minCenterPlateLoadLb = 0;
+    double maxFloquetMultiplier = 0;  ///< |μ|max; < 1 is stable (NaN when not computed)
+    bool stable = true;
+    Eigen::VectorXd harmonics;        ///< scaled unknowns (mm, mrad)
+};
+
+struct SteadyStateBranch {
+    bool stable = true;
+    std::vector<SteadyStatePoint> points;
+};
+
+struct ContinuationSettings {
+    double fromMph = 10, toMph = 22;
+    double initialStep = 0.2;  ///< arclength in (mph, mm, mrad) units
+    double minStep = 1e-3, maxStep = 1.0;
+    int maxPoints = 600;
+    bool computeStability = true;
+};
+
+class DescribingFunctionModel {
+public:
+    static constexpr int kHarmonics = 2;
+    static constexpr int kCoefficients = 2 * kHarmonics + 1;
+    static constexpr int kNumUnknowns = EomHalfCarModel::kNumDofs * kCoefficients;
+
+    /// crossLevelAmplitude: C [m]; railLength: L_r [m].
+    DescribingFunctionModel(const CarParameters& car, double crossLevelAmplitude, double railLength);
+    static double calcFundamentalCrossLevel(double amplitude, double wheelbase, double railLength);
+
+    double getInputAmplitude() const { return inputAmplitude_; }
+    double calcOmega(double speedMph) const;
+    /// Scaled harmonic-balance residual (forces in 10 kN, moments in 10 kN·m).
+    Eigen::VectorXd calcResidual(const Eigen::VectorXd& x, double speedMph) const;
+    /// Static equilibrium, no harmonics.
+    Eigen::VectorXd makeStaticGuess() const;
+    /// Powell's hybrid method at fixed speed; nullopt when it does not converge.
+    std::optional<Eigen::VectorXd> solve(double speedMph, const Eigen::VectorXd& guess) const;
+    /// solve() from the static state, through a homotopy in wedge friction.
+    std::optional<Eigen::VectorXd> solveFromRest(double speedMph) const;
+    /// Pseudo-arclength continuation from the solution at settings.fromMph.
+    std::vector<SteadyStateBranch> trace(const ContinuationSettings& settings) const;
+
+    SteadyStatePoint describe(const Eigen::VectorXd& x, double speedMph) const;
+    /// |μ|max of the twin's monodromy matrix over one period about x.
+    double calcMaxFloquetMultiplier(const Eigen::VectorXd& x, double speedMph) const;
+    /// The twin's state at τ = 0 reconstructed from the harmonics.
+    EomHalfCarModel::State makeTwinState(const Eigen::VectorXd& x, double speedMph) const;
+    EomHalfCarModel makeTwin(double speedMph) const;
+    /// q_j(τ) of every degree of freedom [m, rad].
+    std::vector<TrigSeries> getPositions(const Eigen::VectorXd& x) const;
+
+private:
+    struct Element {
+        int axis = 2;           ///< 1 = lateral (y), 2 = vertical (z)
+        int bodyA = 0;          ///< force +f on A at pA
+        Eigen::Vector2d pA;
+        int bodyB = -1;         ///< −f on B at pB; −1 = the rail
+        Eigen::Vector2d pB;
+        int railSide = -1;      ///< when B is the rail: 0 left, 1 right
+        std::variant<PiecewiseLinearLaw, CoulombLaw> law;
+        std::string name;
+    };
+    void buildElements();
+    TrigSeries calcStationSeries(const std::vector<TrigSeries>& q, int body, const Eigen::Vector2d& p, int axis) const;
+    TrigSeries calcRailSeries(int side, int axis) const;
+    TrigSeries calcRelative(const std::vector<TrigSeries>& q, const Element& e) const;
+
+    CarParameters car_;
+    double inputAmplitude_ = 0, railLength_ = 0;
+    EomHalfCarModel reference_;  // geometry, laws, masses and static state of the twin
+    std::vector<Element> elements_;
+};
+
+}  // namespace rockroll
