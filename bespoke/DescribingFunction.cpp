@@ -7,8 +7,6 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -41,6 +39,20 @@ struct ResidualFunctor {
         fvec = f(x);
         return 0;
     }
+    /// Forward differences with a step of 1e-6 of max(1, |x_i|) in the scaled
+    /// unknowns: MINPACK's own step (relative to |x_i|) collapses on harmonics
+    /// that are exactly zero and then sees only round-off in the switching times.
+    int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
+        const Eigen::VectorXd f0 = f(x);
+        jac.resize(f0.size(), x.size());
+        for (int i = 0; i < x.size(); ++i) {
+            Eigen::VectorXd xp = x;
+            const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+            xp[i] += h;
+            jac.col(i) = (f(xp) - f0) / h;
+        }
+        return 0;
+    }
     int inputs() const { return n; }
     int values() const { return n; }
 };
@@ -49,17 +61,13 @@ std::optional<Eigen::VectorXd> solvePowell(const std::function<Eigen::VectorXd(c
                                            Eigen::VectorXd x, double tolerance, int* evaluations = nullptr) {
     ResidualFunctor functor{f, int(x.size())};
     Eigen::HybridNonLinearSolver<ResidualFunctor> solver(functor);
-    solver.parameters.maxfev = 60 * (x.size() + 1);
+    solver.parameters.maxfev = 200;
     solver.parameters.xtol = 1e-12;
-    // Forward differences over ~1e-5 relative: wide enough to see the Coulomb
-    // forces' switching times move smoothly.
-    solver.parameters.epsfcn = 1e-10;
     solver.diag.setConstant(x.size(), 1.0);
     solver.useExternalScaling = true;
-    const auto status = solver.solveNumericalDiff(x);
+    solver.solve(x);
     if (evaluations) *evaluations = int(solver.nfev);
     const Eigen::VectorXd r = f(x);
-    if (std::getenv("RR_DEBUG")) fprintf(stderr, "powell status %d nfev %d norm %g\n", int(status), int(solver.nfev), r.norm());
     if (!r.allFinite() || r.norm() > tolerance) return std::nullopt;
     return x;
 }
@@ -111,7 +119,7 @@ void DescribingFunctionModel::buildElements() {
         elements_.push_back({kAxisY, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
                              makeLinear(L.lateral.rate, cLock), "lateral_lock"});
         elements_.push_back({kAxisZ, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
-                             CoulombLaw{L.wedgeVertical.limit}, "wedge"});
+                             ElastoPlasticLaw{L.wedgeVertical.limit, L.wedgeVertical.stiffness}, "wedge"});
         elements_.push_back({kAxisZ, M::Wheelset, g.tread[side], -1, zero, side,
                              makeCompressionOnly(L.wheelVertical.stiffness, 0), "wheel"});
         elements_.push_back({kAxisY, M::Wheelset, g.tread[side], -1, Eigen::Vector2d(g.railY[side], 0), side,
@@ -217,7 +225,7 @@ std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double spe
     // (Raising the input amplitude instead fails: a Coulomb element's describing
     // function is singular at zero slip amplitude.)
     std::optional<Eigen::VectorXd> x = makeStaticGuess();
-    for (double scale : {0.0, 0.2, 0.4, 0.6, 0.8, 1.0}) {
+    for (double scale : {0.0, 0.01, 0.03, 0.1, 0.2, 0.4, 0.6, 0.8, 1.0}) {
         CarParameters car = car_;
         car.verticalFriction *= std::max(scale, 1e-6);
         const DescribingFunctionModel step(car, inputAmplitude_, railLength_);
@@ -285,13 +293,12 @@ EomHalfCarModel::State DescribingFunctionModel::makeTwinState(const Eigen::Vecto
         y[j] = q[j].evaluate(0);
         y[M::kNumDofs + j] = omega * q[j].derivative().evaluate(0);
     }
-    // Sliding wedges sit at their limit deflection, on the side that opposes the slip.
-    const auto& L = reference_.getLaws();
+    // Wedge bristles carry the hysteresis force at τ = 0 (F = −k_b·w).
     int side = 0;
     for (const Element& e : elements_)
-        if (e.name == "wedge") {
-            const double v = calcRelative(q, e).derivative().evaluate(0);
-            y[2 * M::kNumDofs + 2 * side] = (v > 0 ? 1 : (v < 0 ? -1 : 0)) * L.wedgeVertical.limit / L.wedgeVertical.stiffness;
+        if (const auto* law = std::get_if<ElastoPlasticLaw>(&e.law)) {
+            const double f = evaluateHistory(calcElastoPlasticHistory(*law, calcRelative(q, e)), 0.0);
+            y[2 * M::kNumDofs + 2 * side] = -f / law->stiffness;
             ++side;
         }
     return y;

@@ -93,7 +93,7 @@ private:
         int bodyB = -1;         ///< −f on B at pB; −1 = the rail
         Eigen::Vector2d pB;
         int railSide = -1;      ///< when B is the rail: 0 left, 1 right
-        std::variant<PiecewiseLinearLaw, CoulombLaw> law;
+        std::variant<PiecewiseLinearLaw, CoulombLaw, ElastoPlasticLaw> law;
         std::string name;
     };
     void buildElements();

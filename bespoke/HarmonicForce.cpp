@@ -146,10 +146,17 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
         const double fLimit = down ? Fc : -Fc;
         const double dSlip = dr + (fr - fLimit) / k;  // where f_r − k(d − d_r) = f_limit
         const TrigSeries stick = TrigSeries::constant(fr + k * dr) + d * -k;
+        // d is monotone between turning points, so the slip point (if any) is
+        // the single crossing of d = dSlip in (ta, tb): bisection finds it exactly.
         double tSlip = tb;
-        for (double r : d.findRoots(dSlip)) {
-            for (double cand : {r, r + 2 * kPi, r + 4 * kPi})
-                if (cand > ta && cand < tSlip) tSlip = cand;
+        const double side0 = d.evaluate(ta) - dSlip, side1 = d.evaluate(tb) - dSlip;
+        if (side0 * side1 < 0) {
+            double lo = ta, hi = tb;
+            for (int it = 0; it < 60; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                ((d.evaluate(mid) - dSlip) * side0 > 0 ? lo : hi) = mid;
+            }
+            tSlip = 0.5 * (lo + hi);
         }
         pieces.push_back({ta, tSlip, stick});
         if (tSlip < tb) {
