@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
     CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
     runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
     runCmd->add_option("--model", run.model,
-                       "halfcar | fullcar (Simbody) | eom (hand-written equations of motion; overrides the scenario)")
-        ->check(CLI::IsMember({"halfcar", "fullcar", "eom"}));
+                       "halfcar | fullcar (Simbody) | eom (hand-written equations of motion) | reduced (massless "
+                       "truck, report 2.2); overrides the scenario")
+        ->check(CLI::IsMember({"halfcar", "fullcar", "eom", "reduced"}));
     runCmd->add_option("--speed-mph", run.speedMph, "speed [mph]")->check(CLI::PositiveNumber);
     runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
         ->check(CLI::NonNegativeNumber);

@@ -1,6 +1,7 @@
 #include "scenarios/ScenarioRun.h"
 
 #include "bespoke/EomSimulation.h"
+#include "bespoke/ReducedHalfCarModel.h"
 #include "bespoke/StiffIntegrator.h"
 
 #include <cmath>
@@ -28,6 +29,18 @@ ScenarioRun runEom(const Scenario& sc, const SummaryOptions& opt) {
     run.summary = summarizeRun(run.result, model.getChannels(), opt);
     return run;
 }
+ScenarioRun runReduced(const Scenario& sc, const SummaryOptions& opt) {
+    const ReducedHalfCarModel model(sc.car,
+                                    makeEquivalentWheelsetInput(TrackInput(sc.track), sc.speed, sc.car.wheelbase));
+    ScenarioRun run;
+    try {
+        run.result = simulateReduced(model, sc.run.duration);
+    } catch (const IntegrationFailure& e) {
+        throw NumericalFailure(e.what(), e.getTime());
+    }
+    run.summary = summarizeRun(run.result, model.getChannels(), opt);
+    return run;
+}
 }  // namespace
 
 ScenarioRun runScenario(const Scenario& sc) {
@@ -37,6 +50,8 @@ ScenarioRun runScenario(const Scenario& sc) {
     ScenarioRun run;
     if (sc.model == "eom") {
         run = runEom(sc, opt);
+    } else if (sc.model == "reduced") {
+        run = runReduced(sc, opt);
     } else {
         const auto model = makeScenarioModel(sc);
         run.result = simulate(*model, sc.run);

@@ -1,0 +1,201 @@
+#include "bespoke/ReducedHalfCarModel.h"
+
+#include "bespoke/StiffIntegrator.h"
+#include "contacts/SpringGroupLaws.h"
+#include "mbmodel/Units.h"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rockroll {
+
+namespace {
+constexpr double kSide[2] = {+1.0, -1.0};
+constexpr const char* kSideName[2] = {"L", "R"};
+}  // namespace
+
+ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails)
+    : car_(car), rails_(std::move(rails)), truck_(car) {
+    mass_ = car.getCarBodyWeight() / 2 / units::g;
+    inertia_ = car.rollInertia / 2;
+    pinStiffness_ = car.contactStiffnessScale * car.centerPinStiffness;
+    staticZ_ = makeStaticState()[2];
+    declareChannels();
+}
+
+ReducedHalfCarModel::State ReducedHalfCarModel::makeStaticState() const {
+    const double Z = calcVerticalSpringCompression(mass_ * units::g / 2, {truck_.Kv, truck_.travel, truck_.Kb});
+    State y = State::Zero();
+    y[2] = truck_.springTopAboveRail - Z + truck_.cpAboveSprings + car_.cgAboveCenterPlate;
+    return y;
+}
+
+ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeStaticMemory() const {
+    TruckMemory m;
+    const double Z = calcVerticalSpringCompression(mass_ * units::g / 2, {truck_.Kv, truck_.travel, truck_.Kb});
+    m.compression = {Z, Z};
+    m.wedgeAnchor = {Z, Z};
+    return m;
+}
+
+std::array<double, 3> ReducedHalfCarModel::solveLateral(const State& y, const TruckMemory& mem) const {
+    // Bolster lateral equilibrium: k_pin·(a − Y) = 2·f₂(Y) + Φ, Φ the two lateral
+    // wedges (|Φ| ≤ 2F_H; stick keeps Y = Y_old), a = y_plate + θ_b·h_cp − y_seat.
+    const double h = car_.cgAboveCenterPlate;
+    const double yPlate = y[1] + y[0] * h;
+    const double ySeat = -mem.rollWheelset * truck_.springTopAboveRail;
+    const double a = yPlate + mem.rollBolster * truck_.cpAboveSprings - ySeat;
+    const LateralSpringLaw law{car_.springLateralRate, car_.gibClearance, car_.gibRate, 0};
+    const double limit = 2 * car_.lateralFriction;
+    auto unbalanced = [&](double Y) { return pinStiffness_ * (a - Y) - 2 * calcLateralSpringForce(Y, 0, law); };
+    const double Yold = mem.lateralDeflection;
+    const double stick = unbalanced(Yold);
+    double Y = Yold, friction = stick;
+    if (std::abs(stick) > limit) {
+        friction = std::copysign(limit, stick);
+        // unbalanced(Y) − friction falls monotonically with Y: bisect on the side Y moves to.
+        double lo = Yold, hi = Yold + std::copysign(1.0, stick);
+        if (lo > hi) std::swap(lo, hi);
+        for (int it = 0; it < 100; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (unbalanced(mid) - friction > 0 ? lo : hi) = mid;
+        }
+        Y = 0.5 * (lo + hi);
+    }
+    return {-pinStiffness_ * (a - Y), Y, friction};
+}
+
+TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, double pinForce,
+                                                 const TruckMemory& mem) const {
+    const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
+    TruckInputs in;
+    const RailState rail = rails_(t);
+    for (int i : {0, 1}) {
+        in.rimZ[i] = y[2] - h + y[0] * kSide[i] * truck_.a_c;
+        in.padZ[i] = y[2] - h + padAbovePlate + y[0] * kSide[i] * truck_.a_s;
+        in.railZ[i] = rail.z[i];
+    }
+    in.pinForce = pinForce;
+    in.compressionOld = mem.compression;
+    in.wedgeAnchor = mem.wedgeAnchor;
+    in.dt = kStep;
+    return in;
+}
+
+ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem) const {
+    Evaluation e;
+    const auto [pin, Y, lateralFriction] = solveLateral(y, mem);
+    e.pinForce = pin;
+    e.lateralDeflection = Y;
+    e.lateralFriction = lateralFriction;
+    e.truck = findTruckEquilibrium(truck_, makeTruckInputs(t, y, pin, mem), mem.mode);
+    const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
+    double Fz = -mass_ * units::g, M = h * pin;
+    for (int i : {0, 1}) {
+        const double Fc = e.truck.rim[i], Fs = e.truck.sideBearing[i];
+        Fz += Fc + Fs;
+        M += Fc * (kSide[i] * truck_.a_c + y[0] * h) + Fs * (kSide[i] * truck_.a_s - y[0] * (padAbovePlate - h));
+    }
+    e.derivative.head<3>() = y.tail<3>();
+    e.derivative[3] = M / inertia_;
+    e.derivative[4] = pin / mass_;
+    e.derivative[5] = Fz / mass_;
+    return e;
+}
+
+void ReducedHalfCarModel::declareChannels() {
+    ChannelLayout& c = channels_;
+    c.roll = c.add("roll_deg");
+    c.add("car_body_vertical_in");
+    c.add("car_body_lateral_in");
+    c.add("cross_level_F_in");
+    c.centerPlate.push_back(c.add("center_plate_F_lb"));
+    for (int side : {0, 1}) c.sideBearing.push_back(c.add(fmt::format("side_bearing_F_{}_lb", kSideName[side])));
+    for (int side : {0, 1}) {
+        c.add(fmt::format("spring_F_{}_lb", kSideName[side]));
+        c.add(fmt::format("wedge_vertical_F_{}_lb", kSideName[side]));
+    }
+    c.add("center_pin_F_lb");
+    c.add("bolster_roll_F_deg");
+    c.add("wheelset_roll_F_deg");
+    for (int side : {0, 1}) {
+        const int idx = c.add(fmt::format("wheels_F_{}_lb", kSideName[side]));
+        c.truckSideWheelLoad.push_back(idx);
+        c.singleWheelLoad.push_back(idx);
+    }
+    for (int side : {0, 1}) c.wheelLift.push_back(c.add(fmt::format("wheel_lift_F1_{}_in", kSideName[side])));
+    c.add("truck_support_mode");  // 0 two-point … 7 no contact (TruckEquilibrium.h)
+    c.add("truck_mode_consistent");
+}
+
+void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out) const {
+    const double lb = units::lbf, in = units::inch, deg = units::degree;
+    const RailState rail = rails_(t);
+    const TruckSolution& s = e.truck;
+    out = {y[0] / deg, (y[2] - staticZ_) / in, y[1] / in, (rail.z[1] - rail.z[0]) / in, (s.rim[0] + s.rim[1]) / lb,
+           s.sideBearing[0] / lb, s.sideBearing[1] / lb};
+    for (int side : {0, 1}) {
+        out.push_back(s.spring[side] / lb);
+        out.push_back(s.friction[side] / lb);
+    }
+    out.push_back(e.pinForce / lb);
+    out.push_back(s.rollBolster / deg);
+    out.push_back(s.rollWheelset / deg);
+    for (int side : {0, 1}) out.push_back(s.wheel[side] / lb);
+    for (int side : {0, 1}) out.push_back(s.wheelLift[side] / in);
+    out.push_back(double(int(s.mode.support)));
+    out.push_back(s.consistent ? 1 : 0);
+}
+
+RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats) {
+    using State = ReducedHalfCarModel::State;
+    const auto wall0 = std::chrono::steady_clock::now();
+    const double h = ReducedHalfCarModel::kStep;
+    State y = model.makeStaticState();
+    ReducedHalfCarModel::TruckMemory mem = model.makeStaticMemory();
+    RunResult result;
+    result.history.names = {"t_s"};
+    for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
+    std::vector<double> row;
+    ReducedRunStatistics st;
+    auto accept = [&](double t) {
+        const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem);
+        mem.mode = e.truck.mode;
+        mem.compression = e.truck.compression;
+        mem.wedgeAnchor = e.truck.wedgeAnchor;
+        mem.lateralDeflection = e.lateralDeflection;
+        mem.rollBolster = e.truck.rollBolster;
+        mem.rollWheelset = e.truck.rollWheelset;
+        if (!e.truck.consistent) ++st.inconsistentSteps;
+        model.calcChannels(t, y, e, row);
+        std::vector<double> full{t};
+        full.insert(full.end(), row.begin(), row.end());
+        result.history.samples.push_back(std::move(full));
+    };
+    accept(0);
+    const long n = std::lround(duration / h);
+    for (long k = 0; k < n; ++k) {
+        const double t = k * h;
+        const State k1 = model.evaluate(t, y, mem).derivative;
+        const State k2 = model.evaluate(t + h / 2, y + h / 2 * k1, mem).derivative;
+        const State k3 = model.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
+        const State k4 = model.evaluate(t + h, y + h * k3, mem).derivative;
+        y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        if (!y.allFinite()) {
+            throw IntegrationFailure(fmt::format(
+                "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",
+                t + h, mem.mode.describe(), y[0], y[1], y[2]), t + h);
+        }
+        accept(t + h);
+        ++st.steps;
+    }
+    result.steps = st.steps;
+    result.realizations = 4 * st.steps + st.steps + 1;
+    result.simTime = n * h;
+    result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    if (stats) *stats = st;
+    return result;
+}
+
+}  // namespace rockroll

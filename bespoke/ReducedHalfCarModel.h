@@ -1,0 +1,80 @@
+#pragma once
+// The report's reduced-complexity simulation (§2.2): the half car body with
+// vertical, lateral and roll motion on a massless truck in equilibrium at every
+// instant (TruckEquilibrium.h), integrated by fixed-step RK4 at Δt = 0.005 s.
+//
+// Car body (mass M = half the car body, roll inertia I about its CG, small angles):
+//
+//     M z̈ = F_cL + F_cR + F_sL + F_sR − M g
+//     M ÿ = F_h
+//     I θ̈ = Σ_k F_k·(p_y,k − θ·p_z,k) + h·F_h        (report eq. 5)
+//
+// where F_k are the rim and side-bearing forces at the car-body points p_k and
+// h the CG height above the center plate. The lateral center-pin force F_h is
+// solved first from the bolster's lateral equilibrium, a one-dimensional
+// problem: pin stiffness k_pin (assumed, docs/model.md) against the two lateral
+// spring groups (with gib) and the lateral wedges (stick or slip by the
+// kinematic rule), with the truck rolls of the last accepted step.
+#include "bespoke/EomHalfCarModel.h"
+#include "bespoke/TruckEquilibrium.h"
+#include "mbmodel/ChannelLayout.h"
+#include "mbmodel/TimeHistory.h"
+
+#include <Eigen/Dense>
+
+namespace rockroll {
+
+class ReducedHalfCarModel {
+public:
+    using State = Eigen::Matrix<double, 6, 1>;  ///< [θ, y, z, θ̇, ẏ, ż] of the car body
+    static constexpr double kStep = 0.005;      ///< the report's Δt [s]
+
+    /// What the truck remembers between steps (the kinematic rule's "old" values).
+    struct TruckMemory {
+        TruckMode mode;
+        std::array<double, 2> compression{0, 0};
+        std::array<double, 2> wedgeAnchor{0, 0};
+        double lateralDeflection = 0;  ///< Y = y_bolster − y_seat
+        double rollBolster = 0, rollWheelset = 0;
+    };
+
+    struct Evaluation {
+        State derivative;
+        TruckSolution truck;
+        double pinForce = 0;
+        double lateralDeflection = 0;
+        double lateralFriction = 0;
+    };
+
+    ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails);
+
+    State makeStaticState() const;
+    TruckMemory makeStaticMemory() const;
+    Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
+    /// Solves the lateral pin / spring / wedge equilibrium: returns (F_h, Y, lateral friction).
+    std::array<double, 3> solveLateral(const State& y, const TruckMemory& memory) const;
+
+    const ChannelLayout& getChannels() const { return channels_; }
+    void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out) const;
+    const TruckGeometry& getTruckGeometry() const { return truck_; }
+    double getMass() const { return mass_; }
+    double getInertia() const { return inertia_; }
+    TruckInputs makeTruckInputs(double t, const State& y, double pinForce, const TruckMemory& memory) const;
+
+private:
+    void declareChannels();
+    CarParameters car_;
+    RailStateFunction rails_;
+    TruckGeometry truck_;
+    double mass_ = 0, inertia_ = 0, pinStiffness_ = 0, staticZ_ = 0;
+    ChannelLayout channels_;
+};
+
+struct ReducedRunStatistics {
+    long steps = 0, inconsistentSteps = 0, modeSearches = 0;
+};
+
+/// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz).
+RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats = nullptr);
+
+}  // namespace rockroll

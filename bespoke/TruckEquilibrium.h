@@ -1,0 +1,103 @@
+#pragma once
+// The reduced model's massless truck (report §2.2): bolster and equivalent
+// wheelset in force and moment equilibrium at every instant, with rigid car
+// body–bolster contacts and rigid rails.
+//
+// Unknowns (small angles, vertical plane): bolster z_b, θ_b; wheelset z_w, θ_w;
+// rim forces F_cL, F_cR; side-bearing forces F_sL, F_sR; wheel forces W_L, W_R;
+// wedge friction forces on the bolster Φ_L, Φ_R. Twelve equations:
+//
+//   bolster   Σ F_z:  −(F_cL + F_cR + F_sL + F_sR) + (P_L + Φ_L) + (P_R + Φ_R) = 0
+//   bolster   Σ M:    −a_c (F_cL − F_cR) − a_s (F_sL − F_sR) + l_s ((P_L + Φ_L) − (P_R + Φ_R)) + h_cp·F_h = 0
+//   wheelset  Σ F_z:  W_L + W_R − (P_L + Φ_L) − (P_R + Φ_R) = 0
+//   wheelset  Σ M:    (g/2)(W_L − W_R) − l_s ((P_L + Φ_L) − (P_R + Φ_R)) + h_st·F_h = 0
+//   each rim / side bearing:   closed → gap = 0,        open → force = 0
+//   each wheel:                on rail → tread z = rail z, lifted → W = 0
+//   each wedge:                stick → Φ = k_b (Z − Z_a),  slip → Φ = ∓F_V
+//
+// with P_i the spring force of the assumed segment (free: 0, linear: K_v Z,
+// bottomed: K_v·travel + K_b (Z − travel)), Z_i = z_seat,i − z_bolster end,i the
+// compression, F_h the lateral center-pin force (solved first, a 1-D problem),
+// h_cp the center plate above the springs and h_st the spring top above the rail.
+// A wedge is an elasto-plastic element, as in the Simbody model: a stiff
+// bristle k_b = F_V / (bristle deflection) in series with the slider, whose
+// anchor Z_a (the compression at which the wedge carries no force) the truck
+// remembers between steps. A rigid stick constraint would make the bolster,
+// held at two points by the car body, statically indeterminate; the bristle
+// keeps every mode determinate. The kinematic rule X_r = Ẋ_r·Δt gives the
+// sliding direction: Ż = (Z − Z_old)/Δt.
+//
+// A mode fixes every choice above. A mode is consistent when its solution
+// satisfies every inequality: closed-contact and wheel forces ≥ 0, open gaps and
+// lifts ≥ 0, each spring's Z inside its segment, |Φ| ≤ F_V in stick, and the
+// sliding direction matching the sign of Φ in slip. findTruckEquilibrium tries
+// the previous mode first, then every mode in a fixed order.
+#include "mbmodel/CarParameters.h"
+
+#include <Eigen/Dense>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+enum class CarBodySupport { TwoPointCenterPlate, CornerLeft, CornerRight, SideBearingAndCornerLeft,
+                            SideBearingAndCornerRight, SideBearingLeft, SideBearingRight, None };
+enum class WheelContact { Both, LiftLeft, LiftRight };
+enum class WedgeState { Stick, SlipUp, SlipDown };  ///< bolster end moving up (Z falling) or down relative to the seat
+enum class SpringSegment { Free, Linear, Bottomed };
+
+struct TruckMode {
+    CarBodySupport support = CarBodySupport::TwoPointCenterPlate;
+    WheelContact wheels = WheelContact::Both;
+    std::array<WedgeState, 2> wedge{WedgeState::Stick, WedgeState::Stick};
+    std::array<SpringSegment, 2> spring{SpringSegment::Linear, SpringSegment::Linear};
+    bool operator==(const TruckMode& o) const {  // headers stay C++17: no defaulted ==
+        return support == o.support && wheels == o.wheels && wedge == o.wedge && spring == o.spring;
+    }
+    std::string describe() const;
+};
+
+/// Every mode, in the order the search tries them.
+std::vector<TruckMode> enumerateTruckModes();
+
+/// Car-body points the truck sees (ground frame, small angles), and the input.
+struct TruckInputs {
+    std::array<double, 2> rimZ{0, 0};      ///< car body's rim points (left, right) [m]
+    std::array<double, 2> padZ{0, 0};      ///< car body's side-bearing pads [m]
+    std::array<double, 2> railZ{0, 0};     ///< rail tops under the equivalent wheelset [m]
+    double pinForce = 0;                   ///< F_h: lateral force of the bolster on the car body [N]
+    std::array<double, 2> compressionOld{0, 0};  ///< Z at the last accepted step [m]
+    std::array<double, 2> wedgeAnchor{0, 0};     ///< Z_a of each wedge at the last accepted step [m]
+    double dt = 0.005;                     ///< Δt of the kinematic rule [s]
+};
+
+struct TruckSolution {
+    TruckMode mode;
+    double zBolster = 0, rollBolster = 0, zWheelset = 0, rollWheelset = 0;
+    std::array<double, 2> rim{0, 0}, sideBearing{0, 0}, wheel{0, 0}, friction{0, 0}, spring{0, 0};
+    std::array<double, 2> compression{0, 0}, wheelLift{0, 0};
+    std::array<double, 2> wedgeAnchor{0, 0};  ///< Z_a after this solution (moves while slipping)
+    double violation = 0;  ///< 0 when consistent; otherwise the largest inequality violation [N or m scaled]
+    bool consistent = false;
+};
+
+/// Geometry and laws of the massless truck, from the car parameters.
+struct TruckGeometry {
+    double a_c = 0, a_s = 0, l_s = 0, halfGauge = 0;
+    double cpAboveSprings = 0, sbAboveSprings = 0, springTopAboveRail = 0, wheelRadius = 0;
+    double clearance = 0;  ///< side bearing
+    double Kv = 0, travel = 0, Kb = 0, Fv = 0;
+    double kBristle = 0;   ///< wedge bristle stiffness F_V / friction_bristle_deflection
+    explicit TruckGeometry(const CarParameters& car);
+};
+
+/// Solves one mode: the 12 linear equations above, and the consistency checks.
+/// Returns a solution with consistent = false if the mode's system is singular.
+TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
+
+/// The mode search: the previous mode, then every mode; the first consistent
+/// one, or (none consistent) the one with the smallest violation.
+TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous);
+
+}  // namespace rockroll
