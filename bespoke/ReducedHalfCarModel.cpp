@@ -19,7 +19,6 @@ ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunc
     : car_(car), rails_(std::move(rails)), truck_(car) {
     mass_ = car.getCarBodyWeight() / 2 / units::g;
     inertia_ = car.rollInertia / 2;
-    pinStiffness_ = car.contactStiffnessScale * car.centerPinStiffness;
     staticZ_ = makeStaticState()[2];
     declareChannels();
 }
@@ -39,35 +38,7 @@ ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeStaticMemory() const {
     return m;
 }
 
-std::array<double, 3> ReducedHalfCarModel::solveLateral(const State& y, const TruckMemory& mem) const {
-    // Bolster lateral equilibrium: k_pin·(a − Y) = 2·f₂(Y) + Φ, Φ the two lateral
-    // wedges (|Φ| ≤ 2F_H; stick keeps Y = Y_old), a = y_plate + θ_b·h_cp − y_seat.
-    const double h = car_.cgAboveCenterPlate;
-    const double yPlate = y[1] + y[0] * h;
-    const double ySeat = -mem.rollWheelset * truck_.springTopAboveRail;
-    const double a = yPlate + mem.rollBolster * truck_.cpAboveSprings - ySeat;
-    const LateralSpringLaw law{car_.springLateralRate, car_.gibClearance, car_.gibRate, 0};
-    const double limit = 2 * car_.lateralFriction;
-    auto unbalanced = [&](double Y) { return pinStiffness_ * (a - Y) - 2 * calcLateralSpringForce(Y, 0, law); };
-    const double Yold = mem.lateralDeflection;
-    const double stick = unbalanced(Yold);
-    double Y = Yold, friction = stick;
-    if (std::abs(stick) > limit) {
-        friction = std::copysign(limit, stick);
-        // unbalanced(Y) − friction falls monotonically with Y: bisect on the side Y moves to.
-        double lo = Yold, hi = Yold + std::copysign(1.0, stick);
-        if (lo > hi) std::swap(lo, hi);
-        for (int it = 0; it < 100; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (unbalanced(mid) - friction > 0 ? lo : hi) = mid;
-        }
-        Y = 0.5 * (lo + hi);
-    }
-    return {-pinStiffness_ * (a - Y), Y, friction};
-}
-
-TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, double pinForce,
-                                                 const TruckMemory& mem) const {
+TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const TruckMemory& mem) const {
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     TruckInputs in;
     const RailState rail = rails_(t);
@@ -76,7 +47,9 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, doubl
         in.padZ[i] = y[2] - h + padAbovePlate + y[0] * kSide[i] * truck_.a_s;
         in.railZ[i] = rail.z[i];
     }
-    in.pinForce = pinForce;
+    in.plateY = y[1] + y[0] * h;  // small angles: y + p_y − θ·p_z with p = (0, −h)
+    in.lateralOld = mem.lateralDeflection;
+    in.lateralAnchor = mem.lateralAnchor;
     in.compressionOld = mem.compression;
     in.wedgeAnchor = mem.wedgeAnchor;
     in.dt = kStep;
@@ -85,11 +58,11 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, doubl
 
 ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem) const {
     Evaluation e;
-    const auto [pin, Y, lateralFriction] = solveLateral(y, mem);
+    e.truck = findTruckEquilibrium(truck_, makeTruckInputs(t, y, mem), mem.mode);
+    const double pin = e.truck.pinForce;
     e.pinForce = pin;
-    e.lateralDeflection = Y;
-    e.lateralFriction = lateralFriction;
-    e.truck = findTruckEquilibrium(truck_, makeTruckInputs(t, y, pin, mem), mem.mode);
+    e.lateralDeflection = e.truck.lateral;
+    e.lateralFriction = e.truck.lateralFriction;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     double Fz = -mass_ * units::g, M = h * pin;
     for (int i : {0, 1}) {
@@ -165,6 +138,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         mem.compression = e.truck.compression;
         mem.wedgeAnchor = e.truck.wedgeAnchor;
         mem.lateralDeflection = e.lateralDeflection;
+        mem.lateralAnchor = e.truck.lateralAnchor;
         mem.rollBolster = e.truck.rollBolster;
         mem.rollWheelset = e.truck.rollWheelset;
         if (!e.truck.consistent) ++st.inconsistentSteps;

@@ -10,11 +10,9 @@
 //     I θ̈ = Σ_k F_k·(p_y,k − θ·p_z,k) + h·F_h        (report eq. 5)
 //
 // where F_k are the rim and side-bearing forces at the car-body points p_k and
-// h the CG height above the center plate. The lateral center-pin force F_h is
-// solved first from the bolster's lateral equilibrium, a one-dimensional
-// problem: pin stiffness k_pin (assumed, docs/model.md) against the two lateral
-// spring groups (with gib) and the lateral wedges (stick or slip by the
-// kinematic rule), with the truck rolls of the last accepted step.
+// h the CG height above the center plate. The lateral center-pin force F_h
+// (pin stiffness k_pin, assumed: docs/model.md) comes out of the same truck
+// equilibrium as the vertical forces.
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/TruckEquilibrium.h"
 #include "mbmodel/ChannelLayout.h"
@@ -35,6 +33,7 @@ public:
         std::array<double, 2> compression{0, 0};
         std::array<double, 2> wedgeAnchor{0, 0};
         double lateralDeflection = 0;  ///< Y = y_bolster − y_seat
+        double lateralAnchor = 0;      ///< Y_a of the lateral wedges
         double rollBolster = 0, rollWheelset = 0;
     };
 
@@ -51,22 +50,20 @@ public:
     State makeStaticState() const;
     TruckMemory makeStaticMemory() const;
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
-    /// Solves the lateral pin / spring / wedge equilibrium: returns (F_h, Y, lateral friction).
-    std::array<double, 3> solveLateral(const State& y, const TruckMemory& memory) const;
 
     const ChannelLayout& getChannels() const { return channels_; }
     void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out) const;
     const TruckGeometry& getTruckGeometry() const { return truck_; }
     double getMass() const { return mass_; }
     double getInertia() const { return inertia_; }
-    TruckInputs makeTruckInputs(double t, const State& y, double pinForce, const TruckMemory& memory) const;
+    TruckInputs makeTruckInputs(double t, const State& y, const TruckMemory& memory) const;
 
 private:
     void declareChannels();
     CarParameters car_;
     RailStateFunction rails_;
     TruckGeometry truck_;
-    double mass_ = 0, inertia_ = 0, pinStiffness_ = 0, staticZ_ = 0;
+    double mass_ = 0, inertia_ = 0, staticZ_ = 0;
     ChannelLayout channels_;
 };
 

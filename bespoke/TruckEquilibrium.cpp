@@ -10,7 +10,7 @@ namespace rockroll {
 
 namespace {
 constexpr double kSide[2] = {+1.0, -1.0};
-enum Unknown { ZB, TB, ZW, TW, FCL, FCR, FSL, FSR, WL, WR, PHIL, PHIR, N };
+enum Unknown { ZB, TB, ZW, TW, FCL, FCR, FSL, FSR, WL, WR, PHIL, PHIR, YB, FH, PHIH, N };
 using Row = Eigen::Matrix<double, 1, N>;
 
 /// A quantity linear in the unknowns: row·x + c.
@@ -43,6 +43,7 @@ bool liftsWheel(WheelContact w, int side) {
 
 struct Kinematics {
     std::array<Linear, 2> rimGap, padGap, compression, treadLift;
+    Linear lateral;  ///< Y = y_b − y_seat = y_b + θ_w·h_st
 };
 
 Kinematics makeKinematics(const TruckGeometry& g, const TruckInputs& in) {
@@ -69,6 +70,8 @@ Kinematics makeKinematics(const TruckGeometry& g, const TruckInputs& in) {
         k.treadLift[i].row[TW] = s * g.halfGauge;
         k.treadLift[i].c = -g.wheelRadius - in.railZ[i];
     }
+    k.lateral.row[YB] = 1;
+    k.lateral.row[TW] = g.springTopAboveRail;
     return k;
 }
 
@@ -92,9 +95,11 @@ std::string TruckMode::describe() const {
     static const char* wheels[] = {"both wheels", "left wheel lifted", "right wheel lifted"};
     static const char* wedge[] = {"stick", "slip up", "slip down"};
     static const char* spring[] = {"free", "linear", "bottomed"};
-    return fmt::format("{}, {}, wedges {}/{}, springs {}/{}", support[int(this->support)], wheels[int(this->wheels)],
-                       wedge[int(this->wedge[0])], wedge[int(this->wedge[1])], spring[int(this->spring[0])],
-                       spring[int(this->spring[1])]);
+    static const char* gibs[] = {"gibs open", "gib +", "gib −"};
+    return fmt::format("{}, {}, wedges {}/{}, springs {}/{}, lateral wedges {}, {}", support[int(this->support)],
+                       wheels[int(this->wheels)], wedge[int(this->wedge[0])], wedge[int(this->wedge[1])],
+                       spring[int(this->spring[0])], spring[int(this->spring[1])], wedge[int(lateralWedge)],
+                       gibs[int(gib)]);
 }
 
 std::vector<TruckMode> enumerateTruckModes() {
@@ -108,7 +113,11 @@ std::vector<TruckMode> enumerateTruckModes() {
                     m.wheels = WheelContact(w);
                     m.spring = {SpringSegment((sp / 3 + 1) % 3), SpringSegment((sp % 3 + 1) % 3)};  // linear first
                     m.wedge = {WedgeState(f / 3), WedgeState(f % 3)};
-                    modes.push_back(m);
+                    for (int lat = 0; lat < 9; ++lat) {
+                        m.lateralWedge = WedgeState(lat / 3);
+                        m.gib = GibContact(lat % 3);
+                        modes.push_back(m);
+                    }
                 }
     return modes;
 }
@@ -118,7 +127,10 @@ TruckGeometry::TruckGeometry(const CarParameters& car)
       cpAboveSprings(car.centerPlateAboveSprings), sbAboveSprings(car.sideBearingAboveSprings),
       springTopAboveRail(car.springTopAboveRail), wheelRadius(car.wheelRadius), clearance(car.sideBearingClearance),
       Kv(car.springVerticalRate), travel(car.springTravel), Kb(car.bottomingRate), Fv(car.verticalFriction),
-      kBristle(car.verticalFriction / car.frictionBristleDeflection) {}
+      kBristle(car.verticalFriction / car.frictionBristleDeflection), Kh(car.springLateralRate),
+      gibClearance(car.gibClearance), Kgib(car.gibRate), Fh(car.lateralFriction),
+      kBristleLateral(car.lateralFriction / car.frictionBristleDeflection),
+      kPin(car.contactStiffnessScale * car.centerPinStiffness) {}
 
 TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
     const Kinematics k = makeKinematics(g, in);
@@ -149,7 +161,8 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     e = Linear{};
     e.row[FCL] = -g.a_c, e.row[FCR] = g.a_c, e.row[FSL] = -g.a_s, e.row[FSR] = g.a_s;
     e.row += g.l_s * (load[0].row - load[1].row);
-    e.c = g.l_s * (load[0].c - load[1].c) + g.cpAboveSprings * in.pinForce;
+    e.row[FH] += g.cpAboveSprings;
+    e.c = g.l_s * (load[0].c - load[1].c);
     set(1, e, 0);
     e = Linear{};
     e.row[WL] = e.row[WR] = 1;
@@ -159,8 +172,33 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     e = Linear{};
     e.row[WL] = g.halfGauge, e.row[WR] = -g.halfGauge;
     e.row -= g.l_s * (load[0].row - load[1].row);
-    e.c = -g.l_s * (load[0].c - load[1].c) + g.springTopAboveRail * in.pinForce;
+    e.row[FH] += g.springTopAboveRail;
+    e.c = -g.l_s * (load[0].c - load[1].c);
     set(3, e, 0);
+    // Center pin: F_h + k_pin (y_plate − y_b + θ_b h_cp) = 0.
+    e = Linear{};
+    e.row[FH] = 1, e.row[YB] = -g.kPin, e.row[TB] = g.kPin * g.cpAboveSprings;
+    set(12, e, -g.kPin * in.plateY);
+    // Bolster lateral balance: −F_h − 2 f₂(Y) − Φ_H = 0.
+    const double gibSign = mode.gib == GibContact::Positive ? 1 : (mode.gib == GibContact::Negative ? -1 : 0);
+    const double kLat = 2 * (g.Kh + (gibSign != 0 ? g.Kgib : 0));
+    e = Linear{};
+    e.row[FH] = -1, e.row[PHIH] = -1;
+    e.row -= kLat * k.lateral.row;
+    e.c = -kLat * k.lateral.c + 2 * g.Kgib * gibSign * g.gibClearance;
+    set(13, e, 0);
+    // Lateral wedges.
+    switch (mode.lateralWedge) {
+    case WedgeState::Stick: {
+        Linear stick = unknown(PHIH);
+        stick.row -= 2 * g.kBristleLateral * k.lateral.row;
+        stick.c = -2 * g.kBristleLateral * k.lateral.c;
+        set(14, stick, -2 * g.kBristleLateral * in.lateralAnchor);
+        break;
+    }
+    case WedgeState::SlipUp: set(14, unknown(PHIH), 2 * g.Fh); break;
+    case WedgeState::SlipDown: set(14, unknown(PHIH), -2 * g.Fh); break;
+    }
     // Contacts, wheels, wedges.
     for (int i : {0, 1}) {
         if (closesRim(mode.support, i)) set(4 + i, k.rimGap[i], 0);
@@ -187,7 +225,7 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     // Equilibrate: unknowns in mm, mrad and 10 kN, then every row to unit max,
     // so the rank test compares like with like (spring rows carry 1e7 N/m).
     Eigen::Matrix<double, N, 1> colScale;
-    colScale << 1e-3, 1e-3, 1e-3, 1e-3, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4;
+    colScale << 1e-3, 1e-3, 1e-3, 1e-3, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e-3, 1e4, 1e4;
     Eigen::Matrix<double, N, N> As = A * colScale.asDiagonal();
     Eigen::Matrix<double, N, 1> bs = b;
     for (int r = 0; r < N; ++r) {
@@ -201,6 +239,8 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     }
     const Eigen::Matrix<double, N, 1> x = colScale.asDiagonal() * lu.solve(bs);
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
+    sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
+    sol.lateral = k.lateral.evaluate(x);
     double worst = 0;  // forces in units of 10 kN, lengths in units of 0.1 mm
     auto needAtLeast = [&worst](double value, double minimum, double unit) {
         worst = std::max(worst, (minimum - value) / unit);
@@ -231,17 +271,57 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
         case WedgeState::SlipDown: needAtLeast(dZ, 0, 1e-4); break;  // Z rising
         }
     }
+    const double Y = sol.lateral, dY = Y - in.lateralOld;
+    switch (mode.gib) {
+    case GibContact::Open: needAtLeast(Y, -g.gibClearance, 1e-4), needAtLeast(g.gibClearance, Y, 1e-4); break;
+    case GibContact::Positive: needAtLeast(Y, g.gibClearance, 1e-4); break;
+    case GibContact::Negative: needAtLeast(-g.gibClearance, Y, 1e-4); break;
+    }
+    switch (mode.lateralWedge) {
+    case WedgeState::Stick: needAtLeast(2 * g.Fh, std::abs(sol.lateralFriction), 1e4); break;
+    case WedgeState::SlipUp: needAtLeast(dY, 0, 1e-4); break;
+    case WedgeState::SlipDown: needAtLeast(0, dY, 1e-4); break;
+    }
+    sol.lateralAnchor = mode.lateralWedge == WedgeState::Stick
+                            ? in.lateralAnchor
+                            : Y - sol.lateralFriction / (2 * g.kBristleLateral);
     sol.violation = worst;
     sol.consistent = worst <= 1e-9;
     return sol;
 }
 
+std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
+    std::vector<TruckMode> out;
+    auto push = [&](auto setter, int count) {
+        for (int v = 0; v < count; ++v) {
+            TruckMode c = m;
+            setter(c, v);
+            if (!(c == m)) out.push_back(c);
+        }
+    };
+    push([](TruckMode& c, int v) { c.support = CarBodySupport(v); }, 8);
+    push([](TruckMode& c, int v) { c.wheels = WheelContact(v); }, 3);
+    push([](TruckMode& c, int v) { c.wedge[0] = WedgeState(v); }, 3);
+    push([](TruckMode& c, int v) { c.wedge[1] = WedgeState(v); }, 3);
+    push([](TruckMode& c, int v) { c.spring[0] = SpringSegment(v); }, 3);
+    push([](TruckMode& c, int v) { c.spring[1] = SpringSegment(v); }, 3);
+    push([](TruckMode& c, int v) { c.lateralWedge = WedgeState(v); }, 3);
+    push([](TruckMode& c, int v) { c.gib = GibContact(v); }, 3);
+    return out;
+}
+
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous) {
+    // 1. The previous mode; 2. every mode that differs from it in one choice;
+    // 3. every mode. First consistent wins; else the smallest violation.
     TruckSolution best = solveTruckMode(g, in, previous);
     if (best.consistent) return best;
+    for (const TruckMode& m : findNeighbourModes(previous)) {
+        TruckSolution s = solveTruckMode(g, in, m);
+        if (s.consistent) return s;
+        if (s.violation < best.violation) best = s;
+    }
     static const std::vector<TruckMode> modes = enumerateTruckModes();
     for (const TruckMode& m : modes) {
-        if (m == previous) continue;
         TruckSolution s = solveTruckMode(g, in, m);
         if (s.consistent) return s;
         if (s.violation < best.violation) best = s;

@@ -3,9 +3,10 @@
 // wheelset in force and moment equilibrium at every instant, with rigid car
 // body–bolster contacts and rigid rails.
 //
-// Unknowns (small angles, vertical plane): bolster z_b, θ_b; wheelset z_w, θ_w;
-// rim forces F_cL, F_cR; side-bearing forces F_sL, F_sR; wheel forces W_L, W_R;
-// wedge friction forces on the bolster Φ_L, Φ_R. Twelve equations:
+// Unknowns (small angles, cross-section plane): bolster z_b, θ_b, y_b; wheelset
+// z_w, θ_w; rim forces F_cL, F_cR; side-bearing forces F_sL, F_sR; wheel forces
+// W_L, W_R; wedge friction forces on the bolster Φ_L, Φ_R; the lateral wedges'
+// force Φ_H and the center-pin force F_h. Fifteen equations:
 //
 //   bolster   Σ F_z:  −(F_cL + F_cR + F_sL + F_sR) + (P_L + Φ_L) + (P_R + Φ_R) = 0
 //   bolster   Σ M:    −a_c (F_cL − F_cR) − a_s (F_sL − F_sR) + l_s ((P_L + Φ_L) − (P_R + Φ_R)) + h_cp·F_h = 0
@@ -14,6 +15,12 @@
 //   each rim / side bearing:   closed → gap = 0,        open → force = 0
 //   each wheel:                on rail → tread z = rail z, lifted → W = 0
 //   each wedge:                stick → Φ = k_b (Z − Z_a),  slip → Φ = ∓F_V
+//   center pin:       F_h = −k_pin (y_plate − y_b + θ_b h_cp)
+//   bolster  Σ F_y:   −F_h − 2 f₂(Y) − Φ_H = 0,   Y = y_b − y_seat,  y_seat = −θ_w h_st
+//   lateral wedges:   stick → Φ_H = 2 k_bH (Y − Y_a),  slip → Φ_H = ±2 F_H
+//
+// (f₂: K_h·Y, plus K_gib·(|Y| − c_gib)·sign Y in gib contact; the wheelset is
+// held laterally at rail height by the wheel(s) in contact.)
 //
 // with P_i the spring force of the assumed segment (free: 0, linear: K_v Z,
 // bottomed: K_v·travel + K_b (Z − travel)), Z_i = z_seat,i − z_bolster end,i the
@@ -46,14 +53,18 @@ enum class CarBodySupport { TwoPointCenterPlate, CornerLeft, CornerRight, SideBe
 enum class WheelContact { Both, LiftLeft, LiftRight };
 enum class WedgeState { Stick, SlipUp, SlipDown };  ///< bolster end moving up (Z falling) or down relative to the seat
 enum class SpringSegment { Free, Linear, Bottomed };
+enum class GibContact { Open, Positive, Negative };  ///< lateral deflection Y inside, above +c or below −c
 
 struct TruckMode {
     CarBodySupport support = CarBodySupport::TwoPointCenterPlate;
     WheelContact wheels = WheelContact::Both;
     std::array<WedgeState, 2> wedge{WedgeState::Stick, WedgeState::Stick};
     std::array<SpringSegment, 2> spring{SpringSegment::Linear, SpringSegment::Linear};
+    WedgeState lateralWedge = WedgeState::Stick;  ///< SlipUp = Y increasing
+    GibContact gib = GibContact::Open;
     bool operator==(const TruckMode& o) const {  // headers stay C++17: no defaulted ==
-        return support == o.support && wheels == o.wheels && wedge == o.wedge && spring == o.spring;
+        return support == o.support && wheels == o.wheels && wedge == o.wedge && spring == o.spring &&
+               lateralWedge == o.lateralWedge && gib == o.gib;
     }
     std::string describe() const;
 };
@@ -66,7 +77,8 @@ struct TruckInputs {
     std::array<double, 2> rimZ{0, 0};      ///< car body's rim points (left, right) [m]
     std::array<double, 2> padZ{0, 0};      ///< car body's side-bearing pads [m]
     std::array<double, 2> railZ{0, 0};     ///< rail tops under the equivalent wheelset [m]
-    double pinForce = 0;                   ///< F_h: lateral force of the bolster on the car body [N]
+    double plateY = 0;                     ///< car body's center-plate point, lateral [m]
+    double lateralOld = 0, lateralAnchor = 0;    ///< Y and the lateral wedges' anchor Y_a [m]
     std::array<double, 2> compressionOld{0, 0};  ///< Z at the last accepted step [m]
     std::array<double, 2> wedgeAnchor{0, 0};     ///< Z_a of each wedge at the last accepted step [m]
     double dt = 0.005;                     ///< Δt of the kinematic rule [s]
@@ -74,7 +86,9 @@ struct TruckInputs {
 
 struct TruckSolution {
     TruckMode mode;
-    double zBolster = 0, rollBolster = 0, zWheelset = 0, rollWheelset = 0;
+    double zBolster = 0, rollBolster = 0, zWheelset = 0, rollWheelset = 0, yBolster = 0;
+    double pinForce = 0;              ///< F_h, on the car body [N]
+    double lateral = 0, lateralFriction = 0, lateralAnchor = 0;  ///< Y, Φ_H, Y_a
     std::array<double, 2> rim{0, 0}, sideBearing{0, 0}, wheel{0, 0}, friction{0, 0}, spring{0, 0};
     std::array<double, 2> compression{0, 0}, wheelLift{0, 0};
     std::array<double, 2> wedgeAnchor{0, 0};  ///< Z_a after this solution (moves while slipping)
@@ -89,6 +103,7 @@ struct TruckGeometry {
     double clearance = 0;  ///< side bearing
     double Kv = 0, travel = 0, Kb = 0, Fv = 0;
     double kBristle = 0;   ///< wedge bristle stiffness F_V / friction_bristle_deflection
+    double Kh = 0, gibClearance = 0, Kgib = 0, Fh = 0, kBristleLateral = 0, kPin = 0;
     explicit TruckGeometry(const CarParameters& car);
 };
 
@@ -96,8 +111,11 @@ struct TruckGeometry {
 /// Returns a solution with consistent = false if the mode's system is singular.
 TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
 
-/// The mode search: the previous mode, then every mode; the first consistent
-/// one, or (none consistent) the one with the smallest violation.
+/// The modes that differ from m in exactly one choice.
+std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
+
+/// The mode search: the previous mode, then its neighbours, then every mode;
+/// the first consistent one, or (none consistent) the one with the smallest violation.
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous);
 
 }  // namespace rockroll
