@@ -311,15 +311,24 @@ std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
 }
 
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous) {
-    // 1. The previous mode; 2. every mode that differs from it in one choice;
-    // 3. every mode. First consistent wins; else the smallest violation.
+    // 1. The previous mode; 2. every mode that differs from it in one choice,
+    // then in two (contacts often open and close together); 3. every mode.
+    // First consistent wins; else the smallest violation.
     TruckSolution best = solveTruckMode(g, in, previous);
     if (best.consistent) return best;
-    for (const TruckMode& m : findNeighbourModes(previous)) {
+    const std::vector<TruckMode> first = findNeighbourModes(previous);
+    for (const TruckMode& m : first) {
         TruckSolution s = solveTruckMode(g, in, m);
         if (s.consistent) return s;
         if (s.violation < best.violation) best = s;
     }
+    for (const TruckMode& n : first)
+        for (const TruckMode& m : findNeighbourModes(n)) {
+            if (m == previous) continue;
+            TruckSolution s = solveTruckMode(g, in, m);
+            if (s.consistent) return s;
+            if (s.violation < best.violation) best = s;
+        }
     static const std::vector<TruckMode> modes = enumerateTruckModes();
     for (const TruckMode& m : modes) {
         TruckSolution s = solveTruckMode(g, in, m);

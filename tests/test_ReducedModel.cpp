@@ -1,0 +1,185 @@
+// The reduced (massless-truck) model: static equilibrium, each mode's equations
+// against a direct force and moment balance, the wedges' stick and slip, and the
+// mode search.
+#include "bespoke/ReducedHalfCarModel.h"
+#include "mbmodel/Units.h"
+#include "scenarios/ScenarioRun.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+using namespace rockroll;
+
+namespace {
+const CarParameters& getCar() {
+    static const CarParameters car = makeCarParameters("70ton-loaded");
+    return car;
+}
+ReducedHalfCarModel makeLevelModel() {
+    return ReducedHalfCarModel(getCar(), [](double) { return RailState{}; });
+}
+constexpr double kSide[2] = {+1.0, -1.0};
+}  // namespace
+
+TEST(ReducedModel, StaticStateIsConsistentTwoPointEquilibrium) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const auto y = m.makeStaticState();
+    const auto e = m.evaluate(0, y, m.makeStaticMemory());
+    EXPECT_TRUE(e.truck.consistent);
+    EXPECT_EQ(e.truck.mode.support, CarBodySupport::TwoPointCenterPlate);
+    EXPECT_EQ(e.truck.mode.wheels, WheelContact::Both);
+    const double half = m.getMass() * units::g / 2;
+    for (int i : {0, 1}) {
+        EXPECT_NEAR(e.truck.rim[i], half, 1e-6 * half);
+        EXPECT_NEAR(e.truck.wheel[i], half, 1e-6 * half);
+        EXPECT_NEAR(e.truck.spring[i], half, 1e-6 * half);
+        EXPECT_NEAR(e.truck.friction[i], 0.0, 1e-6);
+        EXPECT_EQ(e.truck.sideBearing[i], 0.0);
+    }
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(e.derivative[k], 0.0, 1e-9);
+}
+
+TEST(ReducedModel, ZeroAmplitudeRunStaysStatic) {
+    Scenario sc = getDefaultScenario();
+    sc.model = "reduced";
+    sc.track.amplitude = 0;
+    sc.run.duration = 3;
+    const RunSummary s = runScenario(sc).summary;
+    EXPECT_NEAR(s.maxRollDeg, 0.0, 1e-9);
+    EXPECT_NEAR(s.rawMaxWheelLoadLb, s.staticWheelLoadLb, 1e-6 * s.staticWheelLoadLb);
+}
+
+// Every support and wheel mode, solved at a rolled, displaced car body: the
+// solution's forces must balance the bolster and the wheelset when summed
+// directly from the geometry, and every closed contact must have zero gap.
+TEST(ReducedModel, EveryModeSatisfiesADirectForceAndMomentBalance) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckGeometry& g = m.getTruckGeometry();
+    auto y = m.makeStaticState();
+    y[0] = 0.03, y[1] = 0.004, y[2] -= 0.01;
+    auto mem = m.makeStaticMemory();
+    mem.wedgeAnchor = {0.05, 0.055};
+    TruckInputs in = m.makeTruckInputs(0.1, y, mem);
+    in.railZ = {0.004, -0.003};
+    int solved = 0;
+    for (const TruckMode& mode : enumerateTruckModes()) {
+        const TruckSolution s = solveTruckMode(g, in, mode);
+        if (s.violation >= 1e300) continue;  // singular mode (e.g. bolster free on free springs)
+        ++solved;
+        // Bolster: vertical forces and moment about its origin (small angles, nominal arms).
+        double Fz = 0, M = 0, Fy = -s.pinForce - s.lateralFriction;
+        for (int i : {0, 1}) {
+            const double load = s.spring[i] + s.friction[i];
+            Fz += -s.rim[i] - s.sideBearing[i] + load;
+            M += -kSide[i] * g.a_c * s.rim[i] - kSide[i] * g.a_s * s.sideBearing[i] + kSide[i] * g.l_s * load;
+        }
+        M += g.cpAboveSprings * s.pinForce;
+        const double Y = s.lateral;
+        const bool gibModeClosed = mode.gib != GibContact::Open;
+        Fy -= 2 * (g.Kh * Y + (gibModeClosed ? g.Kgib * (mode.gib == GibContact::Positive ? Y - g.gibClearance
+                                                                                             : Y + g.gibClearance)
+                                             : 0.0));
+        ASSERT_NEAR(Fz, 0.0, 1e-6 * 1e5) << mode.describe();
+        ASSERT_NEAR(M, 0.0, 1e-6 * 1e5) << mode.describe();
+        ASSERT_NEAR(Fy, 0.0, 1e-6 * 1e5) << mode.describe();
+        // Wheelset.
+        double Wz = s.wheel[0] + s.wheel[1], WM = g.halfGauge * (s.wheel[0] - s.wheel[1]);
+        for (int i : {0, 1}) {
+            Wz -= s.spring[i] + s.friction[i];
+            WM -= kSide[i] * g.l_s * (s.spring[i] + s.friction[i]);
+        }
+        WM += g.springTopAboveRail * s.pinForce;
+        ASSERT_NEAR(Wz, 0.0, 1e-6 * 1e5) << mode.describe();
+        ASSERT_NEAR(WM, 0.0, 1e-6 * 1e5) << mode.describe();
+        // Closed contacts have zero gap; lifted wheels carry nothing.
+        for (int i : {0, 1}) {
+            const double rimGap = in.rimZ[i] - (s.zBolster + g.cpAboveSprings + s.rollBolster * kSide[i] * g.a_c);
+            const bool rimClosed = mode.support == CarBodySupport::TwoPointCenterPlate ||
+                                   ((mode.support == CarBodySupport::CornerLeft ||
+                                     mode.support == CarBodySupport::SideBearingAndCornerLeft) && i == 0) ||
+                                   ((mode.support == CarBodySupport::CornerRight ||
+                                     mode.support == CarBodySupport::SideBearingAndCornerRight) && i == 1);
+            if (rimClosed) ASSERT_NEAR(rimGap, 0.0, 1e-9) << mode.describe();
+            else ASSERT_NEAR(s.rim[i], 0.0, 1e-6) << mode.describe();
+            const bool lifted = (mode.wheels == WheelContact::LiftLeft && i == 0) ||
+                                (mode.wheels == WheelContact::LiftRight && i == 1);
+            if (lifted) ASSERT_NEAR(s.wheel[i], 0.0, 1e-6);
+            else ASSERT_NEAR(s.zWheelset - g.wheelRadius + s.rollWheelset * kSide[i] * g.halfGauge, in.railZ[i], 1e-9);
+            switch (mode.wedge[i]) {
+            case WedgeState::SlipUp: ASSERT_NEAR(s.friction[i], -g.Fv, 1e-9 * g.Fv); break;
+            case WedgeState::SlipDown: ASSERT_NEAR(s.friction[i], g.Fv, 1e-9 * g.Fv); break;
+            case WedgeState::Stick:
+                ASSERT_NEAR(s.friction[i], g.kBristle * (s.compression[i] - in.wedgeAnchor[i]), 1e-6 * g.Fv);
+                break;
+            }
+        }
+    }
+    EXPECT_GT(solved, 10000);
+}
+
+// A wedge under a slowly growing, then reversing, load: it sticks (its force
+// follows the bristle, its anchor stays) until the force reaches F_V, slides at
+// ±F_V with a moving anchor, and sticks again at the reversal.
+TEST(ReducedModel, WedgeSticksThenSlipsThenSticksAgainAtReversal) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckGeometry& g = m.getTruckGeometry();
+    auto y = m.makeStaticState();
+    auto mem = m.makeStaticMemory();
+    std::vector<double> friction;
+    std::vector<WedgeState> state;
+    auto stepTo = [&](double dz) {
+        auto yy = y;
+        yy[2] += dz;  // car body pushed down (dz < 0) compresses the springs
+        const auto e = m.evaluate(0, yy, mem);
+        ASSERT_TRUE(e.truck.consistent);
+        mem.mode = e.truck.mode;
+        mem.compression = e.truck.compression;
+        mem.wedgeAnchor = e.truck.wedgeAnchor;
+        friction.push_back(e.truck.friction[0]);
+        state.push_back(e.truck.mode.wedge[0]);
+    };
+    for (int k = 1; k <= 40; ++k) stepTo(-2e-5 * k);       // down 0.8 mm
+    for (int k = 39; k >= 20; --k) stepTo(-2e-5 * k);      // back up 0.4 mm
+    // Sticks first: Φ = k_b (Z − Z_a) grows with the compression.
+    EXPECT_EQ(state[0], WedgeState::Stick);
+    EXPECT_NEAR(friction[0], g.kBristle * 2e-5, 1e-6 * g.Fv);
+    // Reaches the limit and slides down at +F_V.
+    EXPECT_EQ(state[39], WedgeState::SlipDown);
+    EXPECT_NEAR(friction[39], g.Fv, 1e-9 * g.Fv);
+    for (double f : friction) EXPECT_LE(std::abs(f), g.Fv * (1 + 1e-9));
+    // At the reversal it sticks again and unloads along the bristle.
+    EXPECT_EQ(state[40], WedgeState::Stick);
+    EXPECT_NEAR(friction[40], g.Fv - g.kBristle * 2e-5, 1e-6 * g.Fv);
+}
+
+TEST(ReducedModel, ModeSearchEnumeratesEveryModeOnceAndFindsConsistentModes) {
+    const auto modes = enumerateTruckModes();
+    EXPECT_EQ(modes.size(), 8u * 3 * 9 * 9 * 9);
+    std::set<std::string> names;
+    for (const auto& m : modes) names.insert(m.describe());
+    EXPECT_EQ(names.size(), modes.size());
+    EXPECT_EQ(modes.front().support, CarBodySupport::TwoPointCenterPlate);
+    EXPECT_EQ(findNeighbourModes(modes.front()).size(), 7u + 2 * 7);  // support, and 7 three-way choices
+    // Heavy roll to the left: the search leaves two-point contact for the left side bearing.
+    const ReducedHalfCarModel m = makeLevelModel();
+    auto y = m.makeStaticState();
+    y[0] = -0.06;  // left side down
+    const auto e = m.evaluate(0, y, m.makeStaticMemory());
+    EXPECT_TRUE(e.truck.consistent) << e.truck.mode.describe();
+    EXPECT_GT(e.truck.sideBearing[0], 0.0) << e.truck.mode.describe();
+    EXPECT_EQ(e.truck.rim[1], 0.0);
+}
+
+// The reduced model rocks into the severe regime on the default case, as the
+// report's own reduced simulation did (its §3.1).
+TEST(ReducedModel, DefaultCaseReachesSideBearingsAndWheelLift) {
+    Scenario sc = getDefaultScenario();
+    sc.model = "reduced";
+    sc.run.duration = 12;
+    const RunSummary s = runScenario(sc).summary;
+    EXPECT_EQ(s.regime, "severe");
+    EXPECT_GT(s.maxWheelLiftIn, 0.1);
+    EXPECT_GT(s.maxSideBearingLoadLb, 0.0);
+}
