@@ -142,7 +142,9 @@ int steadyCommand(const SteadyOptions& o) {
     ContinuationSettings settings;
     settings.fromMph = o.fromMph;
     settings.toMph = o.toMph;
-    settings.computeStability = o.stability;
+    settings.stability = o.stabilityMethod == "floquet" ? StabilityMethod::Floquet
+                         : o.stabilityMethod == "none"  ? StabilityMethod::None
+                                                        : StabilityMethod::FoldRule;
     const auto branches = model.trace(settings);
     if (branches.empty()) throw std::runtime_error(fmt::format("no harmonic-balance solution found at {} mph", o.fromMph));
 
@@ -157,7 +159,12 @@ int steadyCommand(const SteadyOptions& o) {
         j["input_amplitude_in"] = C / units::inch;
         j["input"] = inputNote;
         j["model"] = "describing function (half car, report 4.1 simplifications)";
-        j["stability"] = o.stability ? "Floquet multipliers of the time-domain twin over one period" : "not computed";
+        j["stability"] = o.stabilityMethod == "floquet"
+                             ? "Floquet multipliers of the time-domain twin's periodic orbit at every point"
+                         : o.stabilityMethod == "none"
+                             ? "not computed"
+                             : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
+                               "at the stretch's middle point";
         j["branches"] = nlohmann::ordered_json::array();
         for (const auto& b : branches) {
             nlohmann::ordered_json jb;
@@ -170,6 +177,8 @@ int steadyCommand(const SteadyOptions& o) {
                                         {"max_wheel_load_lb", p.maxWheelLoadLb},
                                         {"max_side_bearing_load_lb", p.maxSideBearingLoadLb},
                                         {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
+                                        {"folds_before", p.foldsBefore},
+                                        {"floquet_converged", p.floquetConverged},
                                         {"max_floquet_multiplier",
                                          std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
                                                                                : nlohmann::ordered_json(nullptr)}});

@@ -18,7 +18,7 @@ struct SteadyOptions {
     std::optional<double> amplitudeIn;
     double fromMph = 10, toMph = 22;
     bool json = false;
-    bool stability = true;
+    std::string stabilityMethod = "fold";  ///< fold | floquet | none
 };
 
 int runDefaultCase();

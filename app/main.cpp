@@ -35,7 +35,11 @@ int main(int argc, char** argv) {
     steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
     steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
     steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
-    steadyCmd->add_flag("!--no-stability", steady.stability, "skip the Floquet stability of each point");
+    steadyCmd->add_option("--stability", steady.stabilityMethod,
+                          "fold: each stretch between folds by Floquet on the time-domain twin at its middle point; "
+                          "floquet: every point (slow); none")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"fold", "floquet", "none"}));
 
     CLI11_PARSE(cli, argc, argv);
     try {

@@ -15,8 +15,8 @@
 // the zero crossings (HarmonicForce.h). 9 positions × 5 coefficients = 45
 // equations, solved by Powell's hybrid method (Eigen's HybridNonLinearSolver)
 // and continued in speed by pseudo-arclength continuation. Stability: Floquet
-// multipliers of the time-domain twin over one period about the harmonic
-// solution (docs/bespoke.md).
+// multipliers of the time-domain twin on its periodic orbit near the harmonic
+// solution, at the first point or at every point (docs/bespoke.md).
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/HarmonicForce.h"
 
@@ -35,7 +35,9 @@ struct SteadyStatePoint {
     double maxWheelLoadLb = 0;        ///< equivalent wheelset wheel = two wheels, one truck side
     double maxSideBearingLoadLb = 0;
     double minCenterPlateLoadLb = 0;
-    double maxFloquetMultiplier = 0;  ///< |μ|max; < 1 is stable (NaN when not computed)
+    double maxFloquetMultiplier = 0;  ///< |μ|max on the twin's orbit; < 1 is stable (NaN when not computed)
+    bool floquetConverged = false;    ///< the shooting found the twin's periodic orbit
+    int foldsBefore = 0;              ///< folds passed along the path before this point
     bool stable = true;
     Eigen::VectorXd harmonics;        ///< scaled unknowns (mm, mrad)
 };
@@ -45,12 +47,26 @@ struct SteadyStateBranch {
     std::vector<SteadyStatePoint> points;
 };
 
+/// How each point's stability is decided (docs/bespoke.md):
+///   FoldRule: the path is cut at its folds; each stretch is marked by Floquet on the twin
+///             at its middle point (flipping from the stretch before where shooting fails);
+///   Floquet:  every point by Floquet on the twin (slow: a shooting per point);
+///   None:     not decided (every point reported stable, multipliers NaN).
+enum class StabilityMethod { FoldRule, Floquet, None };
+
+struct TwinFloquet {
+    bool converged = false;    ///< shooting reached a periodic orbit of the twin
+    double mismatch = 0;       ///< |φ_T(y) − y| in units of the perturbation steps
+    double maxMultiplier = 0;  ///< |μ|max of the monodromy matrix there
+    double rollAmplitudeDeg = 0;
+};
+
 struct ContinuationSettings {
     double fromMph = 10, toMph = 22;
     double initialStep = 0.2;  ///< arclength in (mph, mm, mrad) units
     double minStep = 1e-3, maxStep = 1.0;
     int maxPoints = 600;
-    bool computeStability = true;
+    StabilityMethod stability = StabilityMethod::FoldRule;
 };
 
 class DescribingFunctionModel {
@@ -77,8 +93,10 @@ public:
     std::vector<SteadyStateBranch> trace(const ContinuationSettings& settings) const;
 
     SteadyStatePoint describe(const Eigen::VectorXd& x, double speedMph) const;
-    /// |μ|max of the twin's monodromy matrix over one period about x.
-    double calcMaxFloquetMultiplier(const Eigen::VectorXd& x, double speedMph) const;
+    /// Floquet multipliers of the time-domain twin: shooting (Newton on the
+    /// one-period flow map, finite-difference monodromy) from the harmonic
+    /// solution's state to the twin's periodic orbit, then |μ|max there.
+    TwinFloquet calcTwinFloquet(const Eigen::VectorXd& x, double speedMph) const;
     /// The twin's state at τ = 0 reconstructed from the harmonics.
     EomHalfCarModel::State makeTwinState(const Eigen::VectorXd& x, double speedMph) const;
     EomHalfCarModel makeTwin(double speedMph) const;

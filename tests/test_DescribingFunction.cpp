@@ -70,7 +70,7 @@ TEST(DescribingFunction, ContinuationTracesTheFoldsOfTheJumpResonance) {
     s.fromMph = 12;
     s.toMph = 22;
     s.maxPoints = 250;
-    s.computeStability = false;
+    s.stability = StabilityMethod::None;
     const auto branches = df.trace(s);
     ASSERT_FALSE(branches.empty());
     std::vector<double> speeds;
