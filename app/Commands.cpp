@@ -179,6 +179,10 @@ int steadyCommand(const SteadyOptions& o) {
                                         {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
                                         {"folds_before", p.foldsBefore},
                                         {"floquet_converged", p.floquetConverged},
+                                        {"stability_evidence", p.stabilityEvidence},
+                                        {"twin_persistence", std::isfinite(p.twinPersistence) && p.twinPersistence > 0
+                                                                 ? nlohmann::ordered_json(p.twinPersistence)
+                                                                 : nlohmann::ordered_json(nullptr)},
                                         {"max_floquet_multiplier",
                                          std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
                                                                                : nlohmann::ordered_json(nullptr)}});

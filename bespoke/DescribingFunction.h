@@ -37,6 +37,8 @@ struct SteadyStatePoint {
     double minCenterPlateLoadLb = 0;
     double maxFloquetMultiplier = 0;  ///< |μ|max on the twin's orbit; < 1 is stable (NaN when not computed)
     bool floquetConverged = false;    ///< the shooting found the twin's periodic orbit
+    double twinPersistence = 0;       ///< twin's roll amplitude after 10 periods / this point's (NaN if not run)
+    std::string stabilityEvidence = "none";  ///< floquet | persistence | none (fold rule)
     int foldsBefore = 0;              ///< folds passed along the path before this point
     bool stable = true;
     Eigen::VectorXd harmonics;        ///< scaled unknowns (mm, mrad)
@@ -97,6 +99,9 @@ public:
     /// one-period flow map, finite-difference monodromy) from the harmonic
     /// solution's state to the twin's periodic orbit, then |μ|max there.
     TwinFloquet calcTwinFloquet(const Eigen::VectorXd& x, double speedMph) const;
+    /// The twin started on the harmonic solution: its roll amplitude over the
+    /// last of `periods` periods divided by the harmonic solution's.
+    double calcTwinPersistence(const Eigen::VectorXd& x, double speedMph, int periods) const;
     /// The twin's state at τ = 0 reconstructed from the harmonics.
     EomHalfCarModel::State makeTwinState(const Eigen::VectorXd& x, double speedMph) const;
     EomHalfCarModel makeTwin(double speedMph) const;

@@ -86,4 +86,18 @@ TEST(DescribingFunction, ContinuationTracesTheFoldsOfTheJumpResonance) {
     for (size_t i = 1; i < speeds.size(); ++i)
         if ((speeds[i] - probe) * (speeds[i - 1] - probe) < 0) ++solutions;
     EXPECT_GE(solutions, 3) << "solutions at " << probe << " mph";
+
+    // Stability evidence from the time-domain twin: started on the lowest branch
+    // it stays there; started on the middle branch (after the first fold) it leaves.
+    std::vector<SteadyStatePoint> all;
+    for (const auto& b : branches) all.insert(all.end(), b.points.begin(), b.points.end());
+    std::vector<const SteadyStatePoint*> middle;
+    for (const auto& p : all)
+        if (p.foldsBefore == 1) middle.push_back(&p);
+    ASSERT_FALSE(middle.empty());
+    const SteadyStatePoint& low = all.front();
+    const SteadyStatePoint& mid = *middle[middle.size() / 2];
+    EXPECT_NEAR(df.calcTwinPersistence(low.harmonics, low.speedMph, 10), 1.0, 0.15);
+    EXPECT_GT(std::abs(df.calcTwinPersistence(mid.harmonics, mid.speedMph, 10) - 1.0), 0.15)
+        << "middle branch at " << mid.speedMph << " mph, " << mid.rollAmplitudeDeg << " deg";
 }
