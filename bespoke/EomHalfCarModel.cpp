@@ -254,14 +254,15 @@ std::vector<std::string> EomHalfCarModel::getStateNames() const {
     return names;
 }
 
-RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, double speed, double wheelbase) {
-    return [track, speed, wheelbase](double t) {
+RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, const TrackMotion& motion, double wheelbase) {
+    return [track, motion, wheelbase](double t) {
         RailState r;
+        const double s = motion.calcDistance(t), V = motion.calcSpeed(t);
         for (double s0 : {0.0, -wheelbase}) {
-            const RailPoint p = track.calcRails(speed * t + s0);
+            const RailPoint p = track.calcRails(s + s0);
             for (int i = 0; i < 2; ++i) {
                 r.z[i] += 0.5 * p.z[i];
-                r.zDot[i] += 0.5 * p.slope[i] * speed;
+                r.zDot[i] += 0.5 * p.slope[i] * V;
             }
         }
         return r;

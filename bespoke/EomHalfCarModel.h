@@ -132,9 +132,10 @@ private:
 };
 
 /// Rail input of the half car's equivalent wheelset from the track: the mean of
-/// the rails under axles at track positions V·t and V·t − wheelbase (report eqs 6–7).
+/// the rails under axles at track positions s(t) and s(t) − wheelbase (report eqs 6–7).
 class TrackInput;
-RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, double speed, double wheelbase);
+struct TrackMotion;
+RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, const TrackMotion& motion, double wheelbase);
 
 /// A sinusoidal cross-level c(t) = C·sin(ω t) (rails at ±c/2), the describing
 /// function's input.

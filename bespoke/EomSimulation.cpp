@@ -55,6 +55,7 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
         record(tOut, Eigen::Map<const State>(integ.getState().data()));
     }
     result.steps = integ.getNumSteps();
+    result.finalState = integ.getState();
     result.realizations = integ.getNumRhsEvaluations();
     result.simTime = integ.getTime();
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

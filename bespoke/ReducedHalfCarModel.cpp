@@ -121,12 +121,45 @@ void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluatio
     out.push_back(s.consistent ? 1 : 0);
 }
 
-RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats) {
+namespace {
+using Memory = ReducedHalfCarModel::TruckMemory;
+constexpr int kFlatSize = 6 + 14;
+
+std::vector<double> flatten(const ReducedHalfCarModel::State& y, const Memory& m) {
+    return {y[0], y[1], y[2], y[3], y[4], y[5],
+            double(int(m.mode.support)), double(int(m.mode.wheels)), double(int(m.mode.wedge[0])),
+            double(int(m.mode.wedge[1])), double(int(m.mode.spring[0])), double(int(m.mode.spring[1])),
+            double(int(m.mode.lateralWedge)), double(int(m.mode.gib)), m.compression[0], m.compression[1],
+            m.wedgeAnchor[0], m.wedgeAnchor[1], m.lateralDeflection, m.lateralAnchor};
+}
+
+void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memory& m) {
+    if (int(f.size()) != kFlatSize + 2)
+        throw std::invalid_argument("reduced model: initial state has the wrong size");
+    for (int i = 0; i < 6; ++i) y[i] = f[i];
+    m.mode.support = CarBodySupport(int(f[6]));
+    m.mode.wheels = WheelContact(int(f[7]));
+    m.mode.wedge = {WedgeState(int(f[8])), WedgeState(int(f[9]))};
+    m.mode.spring = {SpringSegment(int(f[10])), SpringSegment(int(f[11]))};
+    m.mode.lateralWedge = WedgeState(int(f[12]));
+    m.mode.gib = GibContact(int(f[13]));
+    m.compression = {f[14], f[15]};
+    m.wedgeAnchor = {f[16], f[17]};
+    m.lateralDeflection = f[18];
+    m.lateralAnchor = f[19];
+    m.rollBolster = f[20];
+    m.rollWheelset = f[21];
+}
+}  // namespace
+
+RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats,
+                          const std::vector<double>& initial) {
     using State = ReducedHalfCarModel::State;
     const auto wall0 = std::chrono::steady_clock::now();
     const double h = ReducedHalfCarModel::kStep;
     State y = model.makeStaticState();
     ReducedHalfCarModel::TruckMemory mem = model.makeStaticMemory();
+    if (!initial.empty()) unflatten(initial, y, mem);
     RunResult result;
     result.history.names = {"t_s"};
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
@@ -165,6 +198,9 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         ++st.steps;
     }
     result.steps = st.steps;
+    result.finalState = flatten(y, mem);
+    result.finalState.push_back(mem.rollBolster);
+    result.finalState.push_back(mem.rollWheelset);
     result.realizations = 4 * st.steps + st.steps + 1;
     result.simTime = n * h;
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -71,7 +71,10 @@ struct ReducedRunStatistics {
     long steps = 0, inconsistentSteps = 0, modeSearches = 0;
 };
 
-/// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz).
-RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats = nullptr);
+/// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz). From static
+/// equilibrium, or from `initial` (a previous RunResult::finalState: the car
+/// body state followed by the truck's memory).
+RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats = nullptr,
+                          const std::vector<double>& initial = {});
 
 }  // namespace rockroll

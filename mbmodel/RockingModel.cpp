@@ -30,12 +30,14 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
 
 RailInputFunction RockingModel::makeRailInput(std::vector<double> trackOffsets) const {
     // trackOffsets: s_i(0), where the axles are on the track at t = 0.
-    const double V = options_.speed;
-    return [this, V, offsets = std::move(trackOffsets)](double t) {
+    TrackMotion motion = options_.motion;
+    if (motion.speed == 0) motion.speed = options_.speed;
+    return [this, motion, offsets = std::move(trackOffsets)](double t) {
         RailHeights h;
         const double w = 1.0 / double(offsets.size());
+        const double s = motion.calcDistance(t), V = motion.calcSpeed(t);
         for (double s0 : offsets) {
-            const RailPoint p = track_.calcRails(V * t + s0);
+            const RailPoint p = track_.calcRails(s + s0);
             for (int i = 0; i < 2; ++i) {
                 h.z[i] += w * p.z[i];
                 h.zDot[i] += w * p.slope[i] * V;

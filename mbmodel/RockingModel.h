@@ -22,6 +22,7 @@ enum class TrackEntry {
 struct ModelOptions {
     double speed = 0;                     ///< [m/s]
     TrackEntry entry = TrackEntry::Lead;
+    TrackMotion motion;                   ///< s(t); its speed is set from `speed` when left 0
 };
 
 class RockingModel {

@@ -67,16 +67,19 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.maxCenterPlateLoadLb = cp.filteredMax;
     r.rawMaxCenterPlateLoadLb = cp.rawMax;
 
+    // Static values: the given reference row (a run continuing a sweep does not
+    // start static), else the first sample.
+    const std::vector<double>& staticRow = opt.staticReference.empty() ? h.samples.front() : opt.staticReference;
     r.minWheelLoadRatio = r.rawMinWheelLoadRatio = std::numeric_limits<double>::infinity();
     for (int c : layout.singleWheelLoad) {
         const auto x = getColumn(h, c);
-        const double staticLoad = x.front();
+        const double staticLoad = staticRow[c + 1];
         r.rawMinWheelLoadRatio = std::min(r.rawMinWheelLoadRatio, minOf(x) / staticLoad);
         // A load cannot be negative; the filter's undershoot near zero can.
         r.minWheelLoadRatio = std::min(r.minWheelLoadRatio, std::max(0.0, minOf(filter.apply(x))) / staticLoad);
     }
-    r.staticWheelLoadLb = h.samples[0][layout.truckSideWheelLoad.front() + 1];
-    r.staticCenterPlateLoadLb = h.samples[0][layout.centerPlate.front() + 1];
+    r.staticWheelLoadLb = staticRow[layout.truckSideWheelLoad.front() + 1];
+    r.staticCenterPlateLoadLb = staticRow[layout.centerPlate.front() + 1];
 
     bool sideBearingContact = sb.rawMax > 0;
     double minPlate = std::numeric_limits<double>::infinity();

@@ -4,6 +4,7 @@
 #include "mbmodel/TimeHistory.h"
 
 #include <string>
+#include <vector>
 
 namespace rockroll {
 
@@ -31,6 +32,7 @@ struct SummaryOptions {
     double forcingPeriod = 0;    ///< L_r / V [s], for the steady window
     int steadyCycles = 3;        ///< cycles at the end used for the steady amplitude
     double filterCutoffHz = 20;
+    std::vector<double> staticReference;  ///< history row of the static state; empty: the run's first sample
 };
 
 /// Computes the summary of a run recorded with `layout` (history columns are

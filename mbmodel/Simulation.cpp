@@ -52,7 +52,7 @@ std::string describeState(const RockingModel& model, const State& s) {
 }
 }  // namespace
 
-RunResult simulate(const RockingModel& model, const RunSettings& settings) {
+RunResult simulate(const RockingModel& model, const RunSettings& settings, const std::vector<double>& initialY) {
     if (!(settings.duration > 0)) throw std::invalid_argument("run duration must be positive");
     if (!(settings.outputRate > 0)) throw std::invalid_argument("output rate must be positive");
     const auto wall0 = std::chrono::steady_clock::now();
@@ -61,7 +61,16 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings) {
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
 
     auto integ = makeIntegrator(model.getSystem(), settings.integrator);
-    State s0 = model.makeStaticState();
+    State s0 = model.getSystem().getDefaultState();
+    if (initialY.empty()) {
+        s0 = model.makeStaticState();
+    } else {
+        if (int(initialY.size()) != s0.getNY())
+            throw std::invalid_argument(fmt::format("initial state has {} entries; the model has {}", initialY.size(),
+                                                    s0.getNY()));
+        for (int i = 0; i < s0.getNY(); ++i) s0.updY()[i] = initialY[i];
+        s0.setTime(0);
+    }
     integ->initialize(s0);
 
     std::vector<double> channels;
@@ -103,6 +112,8 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings) {
         record(s);
     }
     result.steps = integ->getNumStepsTaken();
+    const State& sEnd = integ->getState();
+    result.finalState.assign(&sEnd.getY()[0], &sEnd.getY()[0] + sEnd.getNY());
     result.realizations = integ->getNumRealizations();
     result.simTime = integ->getTime();
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -35,6 +35,9 @@ private:
 std::vector<std::string> getIntegratorNames();
 
 /// Runs `model` from its static state for settings.duration.
-RunResult simulate(const RockingModel& model, const RunSettings& settings);
+/// From static equilibrium, or (initialY not empty) from that flat state
+/// [q, u, z] at t = 0, as a previous run's RunResult::finalState holds it.
+RunResult simulate(const RockingModel& model, const RunSettings& settings,
+                   const std::vector<double>& initialY = {});
 
 }  // namespace rockroll

@@ -22,6 +22,7 @@ struct RunResult {
     long realizations = 0;  ///< right-hand-side evaluations (System realizations) the integrator made
     double simTime = 0;   ///< [s]
     double wallTime = 0;  ///< [s]
+    std::vector<double> finalState;  ///< the model's state at the end, flat, to continue from
 };
 
 }  // namespace rockroll

@@ -8,55 +8,66 @@
 
 namespace rockroll {
 
-std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc) {
-    return makeRockingModel(sc.model, sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry});
-}
-
-EomHalfCarModel makeScenarioEomModel(const Scenario& sc) {
-    return EomHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), sc.speed, sc.car.wheelbase),
-                           sc.eom);
-}
-
 namespace {
-ScenarioRun runEom(const Scenario& sc, const SummaryOptions& opt) {
-    const EomHalfCarModel model = makeScenarioEomModel(sc);
-    ScenarioRun run;
-    try {
-        run.result = simulateEom(model, {sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy});
-    } catch (const IntegrationFailure& e) {
-        throw NumericalFailure(e.what(), e.getTime());
-    }
-    run.summary = summarizeRun(run.result, model.getChannels(), opt);
-    return run;
-}
-ScenarioRun runReduced(const Scenario& sc, const SummaryOptions& opt) {
-    const ReducedHalfCarModel model(sc.car,
-                                    makeEquivalentWheelsetInput(TrackInput(sc.track), sc.speed, sc.car.wheelbase));
-    ScenarioRun run;
-    try {
-        run.result = simulateReduced(model, sc.run.duration);
-    } catch (const IntegrationFailure& e) {
-        throw NumericalFailure(e.what(), e.getTime());
-    }
-    run.summary = summarizeRun(run.result, model.getChannels(), opt);
-    return run;
+TrackMotion makeMotion(const Scenario& sc, const RunStart& start) {
+    TrackMotion m;
+    m.speed = sc.speed;
+    m.startDistance = start.distance;
+    m.startSpeed = start.speed;
+    m.rampTime = start.rampTime;
+    return m;
 }
 }  // namespace
 
-ScenarioRun runScenario(const Scenario& sc) {
+std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunStart& start) {
+    ModelOptions options{sc.speed, sc.entry, makeMotion(sc, start)};
+    return makeRockingModel(sc.model, sc.car, TrackInput(sc.track), options);
+}
+
+EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start) {
+    return EomHalfCarModel(
+        sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase), sc.eom);
+}
+
+namespace {
+template <class Model>
+ScenarioRun summarize(RunResult result, const Model& model, const SummaryOptions& opt) {
+    ScenarioRun run;
+    run.result = std::move(result);
+    run.summary = summarizeRun(run.result, model.getChannels(), opt);
+    run.staticReference = opt.staticReference.empty() ? run.result.history.samples.front() : opt.staticReference;
+    return run;
+}
+
+ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOptions& opt) {
+    try {
+        if (sc.model == "eom") {
+            const EomHalfCarModel model = makeScenarioEomModel(sc, start);
+            const EomRunSettings settings{sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy};
+            if (start.state.empty()) return summarize(simulateEom(model, settings), model, opt);
+            return summarize(simulateEom(model, settings, Eigen::Map<const EomHalfCarModel::State>(start.state.data())),
+                             model, opt);
+        }
+        if (sc.model == "reduced") {
+            const ReducedHalfCarModel model(
+                sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase));
+            return summarize(simulateReduced(model, sc.run.duration, nullptr, start.state), model, opt);
+        }
+    } catch (const IntegrationFailure& e) {
+        throw NumericalFailure(e.what(), e.getTime());
+    }
+    const auto model = makeScenarioModel(sc, start);
+    return summarize(simulate(*model, sc.run, start.state), *model, opt);
+}
+}  // namespace
+
+ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     SummaryOptions opt;
     opt.forcingPeriod = sc.track.railLength / sc.speed;
     opt.filterCutoffHz = sc.filterCutoffHz;
-    ScenarioRun run;
-    if (sc.model == "eom") {
-        run = runEom(sc, opt);
-    } else if (sc.model == "reduced") {
-        run = runReduced(sc, opt);
-    } else {
-        const auto model = makeScenarioModel(sc);
-        run.result = simulate(*model, sc.run);
-        run.summary = summarizeRun(run.result, model->getChannels(), opt);
-    }
+    opt.staticReference = start.staticReference;
+    ScenarioRun run = runModel(sc, start, opt);
+    run.finalDistance = makeMotion(sc, start).calcDistance(run.result.simTime);
     run.summary.model = sc.model;
     run.summary.car = sc.car.name;
     // Inputs echoed in the units they were given, without conversion round-off.
