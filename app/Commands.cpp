@@ -1,9 +1,11 @@
 #include "app/Commands.h"
 
 #include "bespoke/DescribingFunction.h"
+#include "scenarios/SpeedSweep.h"
 #include "scenarios/ScenarioRun.h"
 
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -200,6 +202,85 @@ int steadyCommand(const SteadyOptions& o) {
                        p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
                        b.stable ? "yes" : "no");
     return 0;
+}
+
+int sweepCommand(const SweepOptions& o) {
+    std::vector<SweepSpec> specs;
+    for (const std::string& file : o.scenarios) {
+        Scenario base = loadScenarioFile(file);
+        if (o.model) base.model = *o.model;
+        if (o.durationS) base.run.duration = *o.durationS;
+        std::vector<double> amplitudes = o.amplitudesIn;
+        if (amplitudes.empty()) amplitudes.push_back(base.track.amplitude / units::inch);
+        for (double a : amplitudes)
+            for (const char* dir : {"up", "down"}) {
+                if (o.direction != "both" && o.direction != dir) continue;
+                SweepSpec s;
+                s.scenario = base;
+                s.scenario.track.amplitude = a * units::inch;
+                s.fromMph = o.fromMph;
+                s.toMph = o.toMph;
+                s.stepMph = o.stepMph;
+                s.direction = std::string(dir) == "up" ? SweepDirection::Up : SweepDirection::Down;
+                s.fresh = o.fresh;
+                specs.push_back(s);
+            }
+    }
+    size_t total = 0, done = 0, failed = 0;
+    for (const auto& s : specs) total += getSweepSpeeds(s).size();
+    auto progress = [&](const SweepPoint& p) {
+        ++done;
+        failed += p.failed ? 1 : 0;
+        const int width = 30, filled = int(width * done / std::max<size_t>(total, 1));
+        fmt::print(stderr, "\r[{}{}] {}/{} speeds{}", std::string(filled, '#'), std::string(width - filled, '-'), done,
+                   total, failed ? fmt::format(", {} failed", failed) : "");
+        if (done == total) fmt::print(stderr, "\n");
+    };
+    const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const auto results = runSweeps(specs, jobs, progress);
+
+    nlohmann::ordered_json all = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < specs.size(); ++i)
+        for (const SweepPoint& p : results[i]) {
+            nlohmann::ordered_json j;
+            if (p.failed) {
+                j["model"] = specs[i].scenario.model;
+                j["car"] = specs[i].scenario.car.name;
+                j["speed_mph"] = p.speedMph;
+                j["amplitude_in"] = specs[i].scenario.track.amplitude / units::inch;
+                j["failed"] = true;
+                j["error"] = p.error;
+            } else {
+                j = toJson(p.summary);
+                j["failed"] = false;
+            }
+            j["direction"] = p.direction;
+            j["start"] = p.start;
+            all.push_back(j);
+        }
+    if (o.json) {
+        fmt::print("{}\n", all.dump());
+    } else {
+        for (size_t i = 0; i < specs.size(); ++i) {
+            const Scenario& sc = specs[i].scenario;
+            fmt::print("\n{} model, {} car, {:.2f} in, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
+                       sc.track.amplitude / units::inch, specs[i].direction == SweepDirection::Up ? "up" : "down",
+                       specs[i].fresh ? "each speed from rest" : "state carried");
+            fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}\n", "speed mph", "max roll", "steady roll",
+                       "lift in", "wheel lb", "side brg lb", "regime");
+            for (const SweepPoint& p : results[i]) {
+                if (p.failed) {
+                    fmt::print("{:>10.2f}  numerical failure: {}\n", p.speedMph, p.error.substr(0, p.error.find('\n')));
+                    continue;
+                }
+                const RunSummary& s = p.summary;
+                fmt::print("{:>10.2f}{:>12.2f}{:>14.2f}{:>12.2f}{:>14.0f}{:>14.0f}{:>10}\n", p.speedMph, s.maxRollDeg,
+                           s.steadyRollAmplitudeDeg, s.maxWheelLiftIn, s.maxWheelLoadLb, s.maxSideBearingLoadLb,
+                           s.regime);
+            }
+        }
+    }
+    return failed ? 4 : 0;
 }
 
 }  // namespace rockroll::app

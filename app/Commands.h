@@ -2,6 +2,7 @@
 // The rockroll sub-commands.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rockroll::app {
 
@@ -21,7 +22,19 @@ struct SteadyOptions {
     std::string stabilityMethod = "fold";  ///< fold | floquet | none
 };
 
+struct SweepOptions {
+    std::vector<std::string> scenarios;
+    std::optional<std::string> model;
+    std::vector<double> amplitudesIn;
+    double fromMph = 0, toMph = 0, stepMph = 0;
+    std::string direction = "both";
+    std::optional<double> durationS;
+    int jobs = 0;  ///< 0: one per core
+    bool json = false, fresh = false;
+};
+
 int runDefaultCase();
+int sweepCommand(const SweepOptions& options);
 int steadyCommand(const SteadyOptions& options);
 int runCommand(const RunOptions& options);
 

@@ -41,10 +41,32 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::IsMember({"fold", "floquet", "none"}));
 
+    app::SweepOptions sweep;
+    CLI::App* sweepCmd = cli.add_subcommand(
+        "sweep", "speed sweeps up and/or down, each speed starting from the previous one's final state");
+    sweepCmd->add_option("scenario", sweep.scenarios, "scenario file(s) (TOML); one sweep set per car")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sweepCmd->add_option("--model", sweep.model, "halfcar | fullcar | eom | reduced (overrides the scenarios)")
+        ->check(CLI::IsMember({"halfcar", "fullcar", "eom", "reduced"}));
+    sweepCmd->add_option("--amplitude-in", sweep.amplitudesIn, "cross-level amplitude(s) A [in]")
+        ->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--from-mph", sweep.fromMph, "lowest speed [mph]")->required()->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--to-mph", sweep.toMph, "highest speed [mph]")->required()->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--step-mph", sweep.stepMph, "speed step [mph]")->required()->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--direction", sweep.direction, "up | down | both")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"up", "down", "both"}));
+    sweepCmd->add_option("--duration-s", sweep.durationS, "simulated time per speed [s]")->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--jobs", sweep.jobs, "parallel sweeps (default: one per core)")->check(CLI::NonNegativeNumber);
+    sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
+    sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
+
     CLI11_PARSE(cli, argc, argv);
     try {
         if (runCmd->parsed()) return app::runCommand(run);
         if (steadyCmd->parsed()) return app::steadyCommand(steady);
+        if (sweepCmd->parsed()) return app::sweepCommand(sweep);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

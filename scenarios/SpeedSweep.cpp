@@ -1,0 +1,78 @@
+#include "scenarios/SpeedSweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace rockroll {
+
+std::vector<double> getSweepSpeeds(const SweepSpec& s) {
+    if (!(s.stepMph > 0)) throw std::invalid_argument("sweep step must be positive");
+    if (!(s.toMph >= s.fromMph)) throw std::invalid_argument("sweep: --to-mph must not be below --from-mph");
+    std::vector<double> v;
+    const long n = std::lround(std::floor((s.toMph - s.fromMph) / s.stepMph + 1e-9));
+    for (long k = 0; k <= n; ++k) v.push_back(s.fromMph + k * s.stepMph);
+    if (s.direction == SweepDirection::Down) std::reverse(v.begin(), v.end());
+    return v;
+}
+
+std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint) {
+    std::vector<SweepPoint> out;
+    RunStart next;  // rest
+    std::vector<double> staticReference;
+    for (double mph : getSweepSpeeds(spec)) {
+        Scenario sc = spec.scenario;
+        sc.speed = mph * units::mph;
+        SweepPoint p;
+        p.speedMph = mph;
+        p.direction = spec.direction == SweepDirection::Up ? "up" : "down";
+        p.start = next.state.empty() ? "rest" : "continued";
+        next.staticReference = staticReference;
+        try {
+            const ScenarioRun run = runScenario(sc, next);
+            p.summary = run.summary;
+            if (staticReference.empty()) staticReference = run.staticReference;
+            if (spec.fresh) {
+                next = RunStart{};
+            } else {
+                next.state = run.result.finalState;
+                next.distance = run.finalDistance;
+                next.speed = sc.speed;
+                next.rampTime = spec.rampTime;
+            }
+        } catch (const NumericalFailure& e) {
+            // Reported, not dropped; the next speed starts again from rest.
+            p.failed = true;
+            p.error = e.what();
+            next = RunStart{};
+        }
+        out.push_back(p);
+        if (onPoint) onPoint(out.back());
+    }
+    return out;
+}
+
+std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
+                                               const std::function<void(const SweepPoint&)>& onPoint) {
+    std::vector<std::vector<SweepPoint>> results(specs.size());
+    std::mutex callback;
+    auto report = [&](const SweepPoint& p) {
+        if (!onPoint) return;
+        std::lock_guard<std::mutex> lock(callback);
+        onPoint(p);
+    };
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < specs.size(); i = next++) results[i] = runSweep(specs[i], report);
+    };
+    std::vector<std::thread> pool;
+    const int n = std::max(1, std::min<int>(jobs, int(specs.size())));
+    for (int k = 0; k < n; ++k) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+    return results;
+}
+
+}  // namespace rockroll

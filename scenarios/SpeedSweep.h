@@ -1,0 +1,43 @@
+#pragma once
+// Speed sweeps with hysteresis (report §3.2): each speed starts from the final
+// state of the previous one, and the track input continues from the distance the
+// car reached, ramping the speed so the rails never jump. Independent sweeps
+// (up and down, several amplitudes, several cars) run in parallel.
+#include "scenarios/ScenarioRun.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+enum class SweepDirection { Up, Down };
+
+struct SweepSpec {
+    Scenario scenario;      ///< car, track, model, run duration per speed
+    double fromMph = 0, toMph = 0, stepMph = 0;
+    SweepDirection direction = SweepDirection::Up;
+    bool fresh = false;     ///< every speed from rest instead of carrying state
+    double rampTime = 1.0;  ///< speed ramp between speeds [s]
+};
+
+struct SweepPoint {
+    double speedMph = 0;
+    std::string direction;   ///< "up" | "down"
+    std::string start;       ///< "rest" | "continued"
+    bool failed = false;
+    std::string error;       ///< the numerical failure, when failed
+    RunSummary summary;      ///< valid unless failed
+};
+
+/// The speeds a sweep visits, in order (inclusive of both ends, to 1e-9 mph).
+std::vector<double> getSweepSpeeds(const SweepSpec& spec);
+
+/// One sweep. onPoint is called after every speed (from this thread).
+std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint = {});
+
+/// Several sweeps on up to `jobs` threads; results in the order of `specs`.
+std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
+                                               const std::function<void(const SweepPoint&)>& onPoint = {});
+
+}  // namespace rockroll
