@@ -42,7 +42,9 @@ public:
 
     /// State at t = 0 with every body in static equilibrium on level rails and
     /// every friction wedge unloaded.
-    SimTK::State makeStaticState() const;
+    /// requireLevelRails: refuse (throw) unless the rails are level at t = 0, as
+    /// a run from rest needs; a run continuing a sweep only uses the geometry.
+    SimTK::State makeStaticState(bool requireLevelRails = true) const;
 
     const ChannelLayout& getChannels() const { return channels_; }
     /// One sample of every channel (no time column).

@@ -1,0 +1,87 @@
+// Speed sweeps: state and track distance carried between speeds, rails without
+// jumps, hysteresis between up and down sweeps, and --fresh.
+#include "scenarios/SpeedSweep.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace rockroll;
+
+namespace {
+Scenario makeBase(const std::string& model, double duration) {
+    Scenario sc = getDefaultScenario();
+    sc.model = model;
+    sc.run.duration = duration;
+    return sc;
+}
+std::vector<double> firstRow(const ScenarioRun& r) { return r.result.history.samples.front(); }
+std::vector<double> lastRow(const ScenarioRun& r) { return r.result.history.samples.back(); }
+}  // namespace
+
+TEST(SpeedSweep, TrackMotionRampsWithoutJumps) {
+    const TrackMotion m{20.0, 100.0, 15.0, 1.0};
+    EXPECT_DOUBLE_EQ(m.calcDistance(0), 100.0);
+    EXPECT_DOUBLE_EQ(m.calcSpeed(0), 15.0);
+    EXPECT_NEAR(m.calcSpeed(1.0), 20.0, 1e-12);
+    EXPECT_NEAR(m.calcDistance(1.0), 100.0 + 17.5, 1e-12);
+    EXPECT_NEAR(m.calcDistance(3.0), 100.0 + 17.5 + 40.0, 1e-12);
+    const double h = 1e-6;
+    for (double t : {0.3, 0.999, 1.0, 2.0}) EXPECT_NEAR((m.calcDistance(t + h) - m.calcDistance(t - h)) / (2 * h), m.calcSpeed(t), 1e-5);
+}
+
+TEST(SpeedSweep, ContinuedRunStartsWhereThePreviousEnded) {
+    for (const char* model : {"eom", "halfcar", "reduced"}) {
+        Scenario a = makeBase(model, 4);
+        a.speed = 15 * units::mph;
+        const ScenarioRun first = runScenario(a);
+        Scenario b = a;
+        b.speed = 17 * units::mph;
+        RunStart start;
+        start.state = first.result.finalState;
+        start.distance = first.finalDistance;
+        start.speed = a.speed;
+        start.staticReference = first.staticReference;
+        const ScenarioRun second = runScenario(b, start);
+        const auto end = lastRow(first), begin = firstRow(second);
+        const auto& names = first.result.history.names;
+        for (size_t c = 1; c < names.size(); ++c) {
+            if (names[c].find("slip") != std::string::npos) continue;  // a flag, not a quantity
+            EXPECT_NEAR(begin[c], end[c], 1e-6 * (1 + std::abs(end[c]))) << model << " " << names[c];
+        }
+        EXPECT_NEAR(first.finalDistance, 4 * a.speed, 1e-9);
+        EXPECT_EQ(second.summary.staticWheelLoadLb, first.summary.staticWheelLoadLb) << model;
+    }
+}
+
+// Report §3.2: the response at a speed depends on whether the car reaches it
+// from below or from above.
+TEST(SpeedSweep, UpAndDownSweepsShowHysteresis) {
+    SweepSpec up;
+    up.scenario = makeBase("reduced", 30);
+    up.fromMph = 15, up.toMph = 17, up.stepMph = 1;
+    SweepSpec down = up;
+    down.direction = SweepDirection::Down;
+    const auto r = runSweeps({up, down}, 2);
+    ASSERT_EQ(r[0].size(), 3u);
+    EXPECT_EQ(r[0][0].start, "rest");
+    EXPECT_EQ(r[0][1].start, "continued");
+    EXPECT_DOUBLE_EQ(r[0][0].speedMph, 15);
+    EXPECT_DOUBLE_EQ(r[1][0].speedMph, 17);
+    const RunSummary& fromBelow = r[0][0].summary;  // 15 mph, reached from rest
+    const RunSummary& fromAbove = r[1][2].summary;  // 15 mph, reached from 17 mph
+    EXPECT_EQ(fromBelow.regime, "light");
+    EXPECT_NE(fromAbove.regime, "light");
+    EXPECT_GT(fromAbove.steadyRollAmplitudeDeg, 2 * fromBelow.steadyRollAmplitudeDeg);
+}
+
+TEST(SpeedSweep, FreshStartsEverySpeedFromRest) {
+    SweepSpec s;
+    s.scenario = makeBase("eom", 2);
+    s.fromMph = 14, s.toMph = 15, s.stepMph = 1;
+    s.fresh = true;
+    for (const auto& p : runSweep(s)) EXPECT_EQ(p.start, "rest");
+    EXPECT_EQ(getSweepSpeeds(s), (std::vector<double>{14, 15}));
+    s.direction = SweepDirection::Down;
+    EXPECT_EQ(getSweepSpeeds(s), (std::vector<double>{15, 14}));
+}
