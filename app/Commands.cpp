@@ -1,6 +1,7 @@
 #include "app/Commands.h"
 
 #include "bespoke/DescribingFunction.h"
+#include "mbmodel/ModalAnalysis.h"
 #include "scenarios/SpeedSweep.h"
 #include "scenarios/ScenarioRun.h"
 
@@ -281,6 +282,61 @@ int sweepCommand(const SweepOptions& o) {
         }
     }
     return failed ? 4 : 0;
+}
+
+int modesCommand(const ModesOptions& o) {
+    Scenario sc = loadScenarioFile(o.scenario);
+    if (o.model) sc.model = *o.model;
+    if (sc.model != "halfcar" && sc.model != "fullcar")
+        throw ScenarioError(fmt::format("{}: modes need a Simbody model with truck masses: halfcar or fullcar, not \"{}\"",
+                                        sc.source, sc.model));
+    TrackSpec level = sc.track;
+    level.amplitude = 0;
+    level.measured.clear();
+    const auto model = makeRockingModel(sc.model, makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
+    const std::vector<Mode> modes = calcModes(*model);
+    const std::vector<UncoupledEstimate> table1 = calcTable1Estimates(sc.car);
+    auto findEstimate = [&](const Mode& m) -> const UncoupledEstimate* {
+        const std::string& base = m.body;
+        std::string motion = m.motion;
+        if (motion == "sway-roll") motion = m.name.find("lower") != std::string::npos ? "roll" : "sway";
+        for (const auto& e : table1)
+            if (e.body == base && e.motion == motion) return &e;
+        return nullptr;
+    };
+    if (o.json) {
+        nlohmann::ordered_json j;
+        j["model"] = sc.model;
+        j["car"] = sc.car.name;
+        j["linearization"] = "about static equilibrium, every contact closed, Coulomb friction removed";
+        j["modes"] = nlohmann::ordered_json::array();
+        for (const Mode& m : modes) {
+            nlohmann::ordered_json jm{{"name", m.name},           {"frequency_hz", m.frequencyHz},
+                                      {"damping_ratio", m.dampingRatio}, {"body", m.body},
+                                      {"motion", m.motion},       {"energy_share", m.energyShare}};
+            if (const auto* e = findEstimate(m)) {
+                jm["table1_formula_hz"] = e->frequencyHz;
+                jm["table1_report_hz"] = e->reportHz > 0 ? nlohmann::ordered_json(e->reportHz) : nlohmann::ordered_json(nullptr);
+            }
+            j["modes"].push_back(jm);
+        }
+        j["table1"] = nlohmann::ordered_json::array();
+        for (const auto& e : table1)
+            j["table1"].push_back({{"body", e.body}, {"motion", e.motion}, {"formula_hz", e.frequencyHz},
+                                   {"report_hz", e.reportHz > 0 ? nlohmann::ordered_json(e.reportHz) : nlohmann::ordered_json(nullptr)}});
+        fmt::print("{}\n", j.dump());
+        return 0;
+    }
+    fmt::print("rockroll modes — {} model, {} car: linearized about static equilibrium, every contact closed,\n"
+               "Coulomb friction removed; beside the report's Table 1 uncoupled estimates\n\n",
+               sc.model, sc.car.name);
+    fmt::print("{:<34}{:>10}{:>10}{:>10}{:>18}{:>16}\n", "mode", "f Hz", "zeta", "share", "Table 1 formula", "Table 1 report");
+    for (const Mode& m : modes) {
+        const auto* e = findEstimate(m);
+        fmt::print("{:<34}{:>10.3f}{:>10.3f}{:>10.2f}{:>18}{:>16}\n", m.name, m.frequencyHz, m.dampingRatio, m.energyShare,
+                   e ? fmt::format("{:.2f}", e->frequencyHz) : "", e && e->reportHz > 0 ? fmt::format("{:.2f}", e->reportHz) : "");
+    }
+    return 0;
 }
 
 }  // namespace rockroll::app

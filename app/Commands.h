@@ -33,7 +33,14 @@ struct SweepOptions {
     bool json = false, fresh = false;
 };
 
+struct ModesOptions {
+    std::string scenario;
+    std::optional<std::string> model;
+    bool json = false;
+};
+
 int runDefaultCase();
+int modesCommand(const ModesOptions& options);
 int sweepCommand(const SweepOptions& options);
 int steadyCommand(const SteadyOptions& options);
 int runCommand(const RunOptions& options);

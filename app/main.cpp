@@ -62,11 +62,19 @@ int main(int argc, char** argv) {
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
 
+    app::ModesOptions modes;
+    CLI::App* modesCmd = cli.add_subcommand(
+        "modes", "natural frequencies and damping, linearized about static equilibrium, beside the report's Table 1");
+    modesCmd->add_option("scenario", modes.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
+    modesCmd->add_option("--model", modes.model, "halfcar | fullcar")->check(CLI::IsMember({"halfcar", "fullcar"}));
+    modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
+
     CLI11_PARSE(cli, argc, argv);
     try {
         if (runCmd->parsed()) return app::runCommand(run);
         if (steadyCmd->parsed()) return app::steadyCommand(steady);
         if (sweepCmd->parsed()) return app::sweepCommand(sweep);
+        if (modesCmd->parsed()) return app::modesCommand(modes);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());
