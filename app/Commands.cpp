@@ -1,4 +1,5 @@
 #include "app/Commands.h"
+#include "app/Output.h"
 
 #include "bespoke/DescribingFunction.h"
 #include "mbmodel/ModalAnalysis.h"
@@ -17,57 +18,6 @@ namespace rockroll::app {
 namespace fs = std::filesystem;
 
 namespace {
-
-nlohmann::ordered_json toJson(const RunSummary& s) {
-    nlohmann::ordered_json j;
-    j["model"] = s.model;
-    j["car"] = s.car;
-    j["speed_mph"] = s.speedMph;
-    j["amplitude_in"] = s.amplitudeIn;
-    j["duration_s"] = s.durationS;
-    j["max_roll_deg"] = s.maxRollDeg;
-    j["steady_roll_amplitude_deg"] = s.steadyRollAmplitudeDeg;
-    j["max_wheel_lift_in"] = s.maxWheelLiftIn;
-    j["max_wheel_load_lb"] = s.maxWheelLoadLb;
-    j["min_wheel_load_ratio"] = s.minWheelLoadRatio;
-    j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
-    j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
-    j["raw_max_wheel_load_lb"] = s.rawMaxWheelLoadLb;
-    j["raw_min_wheel_load_ratio"] = s.rawMinWheelLoadRatio;
-    j["raw_max_side_bearing_load_lb"] = s.rawMaxSideBearingLoadLb;
-    j["raw_max_center_plate_load_lb"] = s.rawMaxCenterPlateLoadLb;
-    j["static_wheel_load_lb"] = s.staticWheelLoadLb;
-    j["static_center_plate_load_lb"] = s.staticCenterPlateLoadLb;
-    j["regime"] = s.regime;
-    j["filter"] = s.filter;
-    j["sim_time_s"] = s.simTimeS;
-    j["wall_time_s"] = s.wallTimeS;
-    j["steps"] = s.steps;
-    return j;
-}
-
-/// Writes through a temporary name and renames when complete, so a reader never
-/// sees a half-written file.
-void writeAtomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp);
-        if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
-        write(out);
-        out.flush();
-        if (!out) throw std::runtime_error(fmt::format("error while writing {}", tmp.string()));
-    }
-    fs::rename(tmp, path);
-}
-
-void writeHistoryCsv(std::ostream& out, const TimeHistory& h) {
-    for (size_t i = 0; i < h.names.size(); ++i) out << (i ? "," : "") << h.names[i];
-    out << '\n';
-    for (const auto& row : h.samples) {
-        for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << fmt::format("{:.7g}", row[i]);
-        out << '\n';
-    }
-}
 
 void printSummary(const RunSummary& s, const Scenario& sc) {
     fmt::print("rockroll — {} model, {} car, {:.2f} in cross-level, {:.1f} mph, {:g} s simulated\n", s.model, s.car,

@@ -39,7 +39,16 @@ struct ModesOptions {
     bool json = false;
 };
 
+struct ValidateOptions {
+    bool quick = false;
+    std::string outDir = "results";
+    int jobs = 0;
+    double rollLimitDeg = 6;      ///< peak-to-peak roll limit of the criteria table
+    double wheelLoadLimit = 0.10; ///< minimum single-wheel load / static
+};
+
 int runDefaultCase();
+int validateCommand(const ValidateOptions& options);
 int modesCommand(const ModesOptions& options);
 int sweepCommand(const SweepOptions& options);
 int steadyCommand(const SteadyOptions& options);

@@ -69,12 +69,24 @@ int main(int argc, char** argv) {
     modesCmd->add_option("--model", modes.model, "halfcar | fullcar")->check(CLI::IsMember({"halfcar", "fullcar"}));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
 
+    app::ValidateOptions validate;
+    CLI::App* validateCmd = cli.add_subcommand("validate", "regenerate results/: REPORT.md, CSV data and plots");
+    validateCmd->add_flag("--quick", validate.quick, "a few minutes: reduced-model sweeps only, coarser steps");
+    validateCmd->add_option("--out", validate.outDir, "output directory")->capture_default_str();
+    validateCmd->add_option("--jobs", validate.jobs, "threads (default: one per core)")->check(CLI::NonNegativeNumber);
+    validateCmd->add_option("--roll-limit-deg", validate.rollLimitDeg, "criteria: peak-to-peak roll limit [deg]")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    validateCmd->add_option("--wheel-load-limit", validate.wheelLoadLimit,
+                            "criteria: minimum single-wheel load over static")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+
     CLI11_PARSE(cli, argc, argv);
     try {
         if (runCmd->parsed()) return app::runCommand(run);
         if (steadyCmd->parsed()) return app::steadyCommand(steady);
         if (sweepCmd->parsed()) return app::sweepCommand(sweep);
         if (modesCmd->parsed()) return app::modesCommand(modes);
+        if (validateCmd->parsed()) return app::validateCommand(validate);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

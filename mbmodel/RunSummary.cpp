@@ -45,6 +45,7 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
 
     const auto roll = getColumn(h, layout.roll);
     r.maxRollDeg = std::max(std::abs(maxOf(roll)), std::abs(minOf(roll)));
+    r.peakToPeakRollDeg = maxOf(roll) - minOf(roll);
     const double tEnd = h.samples.back()[0];
     const double window = std::min(opt.steadyCycles * opt.forcingPeriod, tEnd / 2);
     double hi = -1e300, lo = 1e300;

@@ -13,6 +13,7 @@ struct RunSummary {
     double speedMph = 0, amplitudeIn = 0, durationS = 0;
     double maxRollDeg = 0;
     double steadyRollAmplitudeDeg = 0;
+    double peakToPeakRollDeg = 0;        ///< max − min of roll over the run
     double maxWheelLiftIn = 0;
     // Filtered maxima (headline) and raw peaks.
     double maxWheelLoadLb = 0, rawMaxWheelLoadLb = 0;          ///< two wheels, one truck side

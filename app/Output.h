@@ -1,0 +1,22 @@
+#pragma once
+// Output helpers shared by the sub-commands: run summaries as JSON, time
+// histories as CSV, and files written through a temporary name.
+#include "mbmodel/RunSummary.h"
+#include "mbmodel/TimeHistory.h"
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+namespace rockroll::app {
+
+nlohmann::ordered_json toJson(const RunSummary& s);
+
+/// Writes through a temporary name and renames when complete, so a reader never
+/// sees a half-written file.
+void writeAtomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+
+void writeHistoryCsv(std::ostream& out, const TimeHistory& h);
+
+}  // namespace rockroll::app
