@@ -277,6 +277,52 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
     return md;
 }
 
+/// Describing-function solutions per amplitude (70-ton loaded), for sections 3 and 5.
+using SteadyByAmplitude = std::map<double, std::vector<SteadyStateBranch>>;
+
+SteadyByAmplitude traceSteady(const Settings& s) {
+    const CarParameters car = makeCarParameters("70ton-loaded");
+    const double L = 39 * units::foot;
+    const std::vector<double> amps = s.quick ? std::vector<double>{0.75} : std::vector<double>{0.5, 0.75, 1.0};
+    std::vector<std::vector<SteadyStateBranch>> all(amps.size());
+    std::vector<std::function<void()>> jobs;
+    for (size_t i = 0; i < amps.size(); ++i)
+        jobs.push_back([&, i] {
+            const DescribingFunctionModel df(
+                car, DescribingFunctionModel::calcFundamentalCrossLevel(amps[i] * units::inch, car.wheelbase, L), L);
+            ContinuationSettings cs;
+            cs.fromMph = 10, cs.toMph = 22;
+            cs.stability = s.quick ? StabilityMethod::None : StabilityMethod::FoldRule;
+            all[i] = df.trace(cs);
+        });
+    runParallel(jobs, s.jobs);
+    SteadyByAmplitude out;
+    for (size_t i = 0; i < amps.size(); ++i) out[amps[i]] = all[i];
+    return out;
+}
+
+/// The largest (stable, when stability was decided) describing-function solution
+/// at `mph`, interpolated along the path: roll amplitude, wheel load, side bearing.
+std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateBranch>& branches, double mph,
+                                                  bool stableOnly) {
+    std::vector<std::pair<bool, SteadyStatePoint>> pts;
+    for (const auto& b : branches)
+        for (const auto& p : b.points) pts.push_back({b.stable, p});
+    std::optional<std::array<double, 3>> best;
+    for (size_t k = 1; k < pts.size(); ++k) {
+        const auto& a = pts[k - 1].second;
+        const auto& b = pts[k].second;
+        if ((a.speedMph - mph) * (b.speedMph - mph) > 0 || a.speedMph == b.speedMph) continue;
+        if (stableOnly && !(pts[k - 1].first && pts[k].first)) continue;
+        const double f = (mph - a.speedMph) / (b.speedMph - a.speedMph);
+        const std::array<double, 3> v{a.rollAmplitudeDeg + f * (b.rollAmplitudeDeg - a.rollAmplitudeDeg),
+                                      a.maxWheelLoadLb + f * (b.maxWheelLoadLb - a.maxWheelLoadLb),
+                                      a.maxSideBearingLoadLb + f * (b.maxSideBearingLoadLb - a.maxSideBearingLoadLb)};
+        if (!best || v[0] > (*best)[0]) best = v;
+    }
+    return best;
+}
+
 // =============================================================================
 // C, D. The report's Tables 3 and 4 beside every model
 // =============================================================================
@@ -319,7 +365,8 @@ std::optional<std::array<double, 5>> fromSweep(const std::vector<SweepResult>& s
     return std::nullopt;
 }
 
-std::string makeTables34(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta) {
+std::string makeTables34(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
+                         nlohmann::ordered_json& meta) {
     const std::vector<std::string> allModels{"fullcar", "halfcar", "eom", "reduced"};
     // Models without sweeps: one run from rest at the report's speed.
     std::map<std::pair<size_t, std::string>, std::array<double, 5>> values;
@@ -354,10 +401,14 @@ std::string makeTables34(const Settings& s, const std::vector<SweepResult>& swee
                       fmt::join(s.sweepModels, ", "), s.runDuration, s.runDuration);
     for (size_t i = 0; i < kTable3.size(); ++i) {
         const auto& row = kTable3[i];
+        std::optional<std::array<double, 3>> df;
+        if (row.car == "70ton-loaded")
+            for (const auto& [a, branches] : steady)
+                if (std::abs(a - row.amplitudeIn) < 1e-9) df = findSteadyAt(branches, row.speedMph, !s.quick);
         md += fmt::format("**{} at {} mph**\n\n| quantity | report |", row.label, row.speedMph);
         for (const auto& m : allModels) md += " " + m + " |";
-        md += "\n|---|---|";
-        for (size_t k = 0; k < allModels.size(); ++k) md += "---|";
+        md += " describing function |\n|---|---|";
+        for (size_t k = 0; k <= allModels.size(); ++k) md += "---|";
         md += "\n";
         for (int q = 0; q < 5; ++q) {
             md += fmt::format("| {} | {:g} |", qty[q], row.report[q]);
@@ -366,10 +417,20 @@ std::string makeTables34(const Settings& s, const std::vector<SweepResult>& swee
                 md += fmt::format(" {} ({}) |", q < 2 ? fmt::format("{:.2f}", v) : fmt::format("{:.0f}", v), fmtPct(v, row.report[q]));
                 meta["table3"].push_back({{"condition", row.label}, {"quantity", qty[q]}, {"model", m}, {"value", v}, {"report", row.report[q]}});
             }
+            // The describing function gives roll amplitude, wheel load and side bearing (not lift in inches).
+            const int dfIndex = q == 0 ? 0 : q == 2 ? 1 : q == 3 ? 2 : -1;
+            if (df && dfIndex >= 0) {
+                const double v = (*df)[dfIndex];
+                md += fmt::format(" {} ({}) |", q == 0 ? fmt::format("{:.2f}", v) : fmt::format("{:.0f}", v), fmtPct(v, row.report[q]));
+            } else {
+                md += row.car == "70ton-loaded" && df ? " — |" : " n/a |";
+            }
             md += "\n";
         }
         md += "\n";
     }
+    md += "The describing-function column is its largest solution at that speed (stable only, in the full run), "
+          "for the 70-ton loaded car it was traced for (section 5); its roll is an amplitude (half peak-to-peak).\n\n";
     md += "Why the large differences: (1) wheel lift — the report's reduced model has rigid contacts and a massless "
           "truck, so once the center plate unloads nothing holds the wheelset down and it is thrown up by inches; in "
           "the Simbody models and the eom twin the wheelset has mass and rides on stiff compliant rails, and the same "
@@ -429,36 +490,26 @@ std::string makeTables34(const Settings& s, const std::vector<SweepResult>& swee
 // E. Describing-function branches over the simulated sweeps (Figs 31, 34)
 // =============================================================================
 
-std::string makeDescribingFunction(const Settings& s, nlohmann::ordered_json& meta) {
-    const CarParameters car = makeCarParameters("70ton-loaded");
-    const double L = 39 * units::foot;
-    const std::vector<double> amps = s.quick ? std::vector<double>{0.75} : std::vector<double>{0.5, 0.75, 1.0};
+std::string makeDescribingFunction(const Settings& s, const SteadyByAmplitude& steady, nlohmann::ordered_json& meta) {
+    std::vector<double> amps;
+    std::vector<std::vector<SteadyStateBranch>> all;
+    for (const auto& [a, b] : steady) amps.push_back(a), all.push_back(b);
     std::string md = "## 5. Describing-function branches over the simulated sweeps (report Figures 31 and 34)\n\n";
     md += fmt::format("Made by `rockroll steady scenarios/70ton-loaded.toml --amplitude-in A --from-mph 10 --to-mph 22 "
                       "--stability {}`; data `steady_70ton-loaded_<A>in.csv`, plot `steady_70ton-loaded_<A>in.png` with "
                       "the sweeps' steady roll amplitudes. The input is the fundamental harmonic of the cross-level, "
                       "8A/(3π)·cos(π·wheelbase/L_r) = 0.762·A.\n\n| A, in | solutions traced | folds | speed range with ≥ 3 solutions, mph |\n|---|---|---|---|\n",
                       s.quick ? "none" : "fold");
-    std::vector<std::vector<SteadyStateBranch>> all(amps.size());
-    std::vector<std::function<void()>> jobs;
-    for (size_t i = 0; i < amps.size(); ++i)
-        jobs.push_back([&, i] {
-            const DescribingFunctionModel df(car, DescribingFunctionModel::calcFundamentalCrossLevel(amps[i] * units::inch, car.wheelbase, L), L);
-            ContinuationSettings cs;
-            cs.fromMph = 10, cs.toMph = 22;
-            cs.stability = s.quick ? StabilityMethod::None : StabilityMethod::FoldRule;
-            all[i] = df.trace(cs);
-        });
-    runParallel(jobs, s.jobs);
     for (size_t i = 0; i < amps.size(); ++i) {
         const std::string file = fmt::format("steady_70ton-loaded_{:.2f}in.csv", amps[i]);
         std::vector<SteadyStatePoint> pts;
         writeAtomically(s.out / file, [&](std::ostream& o) {
-            o << "branch,stable,speed_mph,roll_amplitude_deg,wheel_lift_fraction,max_wheel_load_lb,max_side_bearing_load_lb,folds_before\n";
+            o << "branch,stable (1 yes, 0 no, -1 not computed),speed_mph,roll_amplitude_deg,wheel_lift_fraction,max_wheel_load_lb,max_side_bearing_load_lb,folds_before\n";
             for (size_t b = 0; b < all[i].size(); ++b)
                 for (const auto& p : all[i][b].points) {
                     pts.push_back(p);
-                    o << fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.0f},{:.0f},{}\n", b, all[i][b].stable ? 1 : 0, p.speedMph,
+                    o << fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.0f},{:.0f},{}\n", b,
+                                     s.quick ? -1 : (all[i][b].stable ? 1 : 0), p.speedMph,
                                      p.rollAmplitudeDeg, p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb,
                                      p.foldsBefore);
                 }
@@ -637,10 +688,11 @@ int validateCommand(const ValidateOptions& o) {
     step("speed sweeps");
     const auto sweeps = runAllSweeps(s);
     md += makeSweepSection(s, sweeps, meta);
-    step("Tables 3 and 4");
-    md += makeTables34(s, sweeps, meta);
     step("describing function");
-    md += makeDescribingFunction(s, meta);
+    const SteadyByAmplitude steady = traceSteady(s);
+    step("Tables 3 and 4");
+    md += makeTables34(s, sweeps, steady, meta);
+    md += makeDescribingFunction(s, steady, meta);
     step("modes");
     md += makeModes();
     step("contact stiffness");

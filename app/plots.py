@@ -122,12 +122,15 @@ def plot_steady(out, meta):
         branches = {}
         for r in rows:
             branches.setdefault(int(r["branch"]), []).append(r)
+        stable_key = [k for k in rows[0].keys() if k.startswith("stable")][0] if rows else "stable"
+        labelled = set()
         for b, pts in sorted(branches.items()):
-            stable = pts[0]["stable"] == "1"
-            ax.plot(column(pts, "speed_mph"), column(pts, "roll_amplitude_deg"), color="k",
-                    linestyle="-" if stable else "--", linewidth=1.5,
-                    label=("describing function, stable" if stable else "describing function, unstable")
-                    if b < 2 else None)
+            state = pts[0][stable_key]
+            style, label = {"1": ("-", "describing function, stable"), "0": ("--", "describing function, unstable")}.get(
+                state, (":", "describing function (stability not computed)"))
+            ax.plot(column(pts, "speed_mph"), column(pts, "roll_amplitude_deg"), color="k", linestyle=style,
+                    linewidth=1.5, label=None if label in labelled else label)
+            labelled.add(label)
         for k, s in enumerate(sweeps.get(st["sweep_key"], [])):
             srows = read_csv(os.path.join(out, s["file"]))
             for direction, marker in (("up", "^"), ("down", "v")):
