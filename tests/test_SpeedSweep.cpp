@@ -85,3 +85,21 @@ TEST(SpeedSweep, FreshStartsEverySpeedFromRest) {
     s.direction = SweepDirection::Down;
     EXPECT_EQ(getSweepSpeeds(s), (std::vector<double>{15, 14}));
 }
+
+// A speed that fails numerically is reported with its error, and the sweep goes
+// on (from rest) instead of stopping or dropping it. CVODE refuses a tolerance
+// of 1e-16 ("too much accuracy requested"), so every speed here fails.
+TEST(SpeedSweep, NumericalFailureIsReportedAndTheSweepGoesOn) {
+    SweepSpec s;
+    s.scenario = makeBase("eom", 2);
+    s.scenario.run.integrator.accuracy = 1e-16;
+    s.fromMph = 14, s.toMph = 16, s.stepMph = 1;
+    const auto points = runSweep(s);
+    ASSERT_EQ(points.size(), 3u);
+    for (const auto& p : points) {
+        EXPECT_TRUE(p.failed);
+        EXPECT_NE(p.error.find("too much accuracy"), std::string::npos) << p.error;
+        EXPECT_NE(p.error.find("t = "), std::string::npos) << "the error names the time";
+        EXPECT_EQ(p.start, "rest");
+    }
+}
