@@ -1,5 +1,6 @@
 // Whole-model invariants and the rocking behaviour the issue asks for.
 #include "scenarios/ScenarioRun.h"
+#include "tests/TestCases.h"
 
 #include <gtest/gtest.h>
 
@@ -7,21 +8,10 @@
 
 using namespace rockroll;
 
+using test_cases::makeCase;
+
 namespace {
-Scenario makeCase(const std::string& model, double amplitudeIn, double speedMph, double duration) {
-    Scenario sc = getDefaultScenario();
-    sc.model = model;
-    sc.track.amplitude = amplitudeIn * units::inch;
-    sc.speed = speedMph * units::mph;
-    sc.run.duration = duration;
-    return sc;
-}
-std::vector<double> column(const ScenarioRun& r, const std::string& name) {
-    const int c = r.result.history.column(name);
-    std::vector<double> out;
-    for (const auto& row : r.result.history.samples) out.push_back(row[c]);
-    return out;
-}
+std::vector<double> column(const ScenarioRun& r, const std::string& name) { return test_cases::getColumn(r.result, name); }
 }  // namespace
 
 TEST(ModelInvariants, ZeroAmplitudeGivesStaticLoads) {
