@@ -52,7 +52,6 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const
     in.lateralAnchor = mem.lateralAnchor;
     in.compressionOld = mem.compression;
     in.wedgeAnchor = mem.wedgeAnchor;
-    in.dt = kStep;
     return in;
 }
 
@@ -60,9 +59,6 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
     Evaluation e;
     e.truck = findTruckEquilibrium(truck_, makeTruckInputs(t, y, mem), mem.mode);
     const double pin = e.truck.pinForce;
-    e.pinForce = pin;
-    e.lateralDeflection = e.truck.lateral;
-    e.lateralFriction = e.truck.lateralFriction;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     double Fz = -mass_ * units::g, M = h * pin;
     for (int i : {0, 1}) {
@@ -112,7 +108,7 @@ void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluatio
         out.push_back(s.spring[side] / lb);
         out.push_back(s.friction[side] / lb);
     }
-    out.push_back(e.pinForce / lb);
+    out.push_back(s.pinForce / lb);
     out.push_back(s.rollBolster / deg);
     out.push_back(s.rollWheelset / deg);
     for (int side : {0, 1}) out.push_back(s.wheel[side] / lb);
@@ -170,7 +166,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         mem.mode = e.truck.mode;
         mem.compression = e.truck.compression;
         mem.wedgeAnchor = e.truck.wedgeAnchor;
-        mem.lateralDeflection = e.lateralDeflection;
+        mem.lateralDeflection = e.truck.lateral;
         mem.lateralAnchor = e.truck.lateralAnchor;
         mem.rollBolster = e.truck.rollBolster;
         mem.rollWheelset = e.truck.rollWheelset;

@@ -40,9 +40,6 @@ public:
     struct Evaluation {
         State derivative;
         TruckSolution truck;
-        double pinForce = 0;
-        double lateralDeflection = 0;
-        double lateralFriction = 0;
     };
 
     ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails);

@@ -81,7 +81,6 @@ struct TruckInputs {
     double lateralOld = 0, lateralAnchor = 0;    ///< Y and the lateral wedges' anchor Y_a [m]
     std::array<double, 2> compressionOld{0, 0};  ///< Z at the last accepted step [m]
     std::array<double, 2> wedgeAnchor{0, 0};     ///< Z_a of each wedge at the last accepted step [m]
-    double dt = 0.005;                     ///< Δt of the kinematic rule [s]
 };
 
 struct TruckSolution {

@@ -59,7 +59,6 @@ std::vector<Mode> calcModes(const RockingModel& model) {
     const State s0 = model.makeStaticState(false);
     const int nu = s0.getNU();
     const auto& matter = model.getMatter();
-    const Eigen::VectorXd ud0 = getUDot(model, s0);
 
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * nu, 2 * nu);
     A.topRightCorner(nu, nu).setIdentity();
@@ -82,7 +81,6 @@ std::vector<Mode> calcModes(const RockingModel& model) {
         }
         A.block(nu, nu + i, nu, 1) = (plus - minus) / (2 * h);
     }
-    (void)ud0;
 
     Matrix Msim;
     matter.calcM(s0, Msim);
