@@ -190,12 +190,7 @@ void EomHalfCarModel::calcStateDerivative(double t, const State& y, State& yDot)
 
 void EomHalfCarModel::declareChannels() {
     ChannelLayout& c = channels_;
-    c.roll = c.add("roll_deg");
-    c.add("car_body_vertical_in");
-    c.add("car_body_lateral_in");
-    c.add("cross_level_F_in");
-    c.centerPlate.push_back(c.add("center_plate_F_lb"));
-    for (int side : {0, 1}) c.sideBearing.push_back(c.add(fmt::format("side_bearing_F_{}_lb", kSideName[side])));
+    declareHalfCarBodyChannels(c);
     for (int side : {0, 1}) {
         const char* S = kSideName[side];
         c.add(fmt::format("spring_F_{}_lb", S));
@@ -207,12 +202,7 @@ void EomHalfCarModel::declareChannels() {
     }
     c.add("bolster_roll_F_deg");
     c.add("bolster_lateral_F_in");
-    for (int side : {0, 1}) {
-        const int idx = c.add(fmt::format("wheels_F_{}_lb", kSideName[side]));
-        c.truckSideWheelLoad.push_back(idx);
-        c.singleWheelLoad.push_back(idx);
-    }
-    for (int side : {0, 1}) c.wheelLift.push_back(c.add(fmt::format("wheel_lift_F1_{}_in", kSideName[side])));
+    declareEquivalentWheelsetChannels(c);
 }
 
 void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out) const {

@@ -75,12 +75,7 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
 
 void ReducedHalfCarModel::declareChannels() {
     ChannelLayout& c = channels_;
-    c.roll = c.add("roll_deg");
-    c.add("car_body_vertical_in");
-    c.add("car_body_lateral_in");
-    c.add("cross_level_F_in");
-    c.centerPlate.push_back(c.add("center_plate_F_lb"));
-    for (int side : {0, 1}) c.sideBearing.push_back(c.add(fmt::format("side_bearing_F_{}_lb", kSideName[side])));
+    declareHalfCarBodyChannels(c);
     for (int side : {0, 1}) {
         c.add(fmt::format("spring_F_{}_lb", kSideName[side]));
         c.add(fmt::format("wedge_vertical_F_{}_lb", kSideName[side]));
@@ -88,12 +83,7 @@ void ReducedHalfCarModel::declareChannels() {
     c.add("center_pin_F_lb");
     c.add("bolster_roll_F_deg");
     c.add("wheelset_roll_F_deg");
-    for (int side : {0, 1}) {
-        const int idx = c.add(fmt::format("wheels_F_{}_lb", kSideName[side]));
-        c.truckSideWheelLoad.push_back(idx);
-        c.singleWheelLoad.push_back(idx);
-    }
-    for (int side : {0, 1}) c.wheelLift.push_back(c.add(fmt::format("wheel_lift_F1_{}_in", kSideName[side])));
+    declareEquivalentWheelsetChannels(c);
     c.add("truck_support_mode");  // 0 two-point … 7 no contact (TruckEquilibrium.h)
     c.add("truck_mode_consistent");
 }

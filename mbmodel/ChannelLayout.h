@@ -26,4 +26,26 @@ struct ChannelLayout {
     }
 };
 
+/// The channels every hand-written half car records first, in this order:
+/// roll, car-body vertical and lateral motion, cross-level, center plate, side
+/// bearings (left, right) — the names the Simbody half car gives them.
+inline void declareHalfCarBodyChannels(ChannelLayout& c) {
+    c.roll = c.add("roll_deg");
+    c.add("car_body_vertical_in");
+    c.add("car_body_lateral_in");
+    c.add("cross_level_F_in");
+    c.centerPlate.push_back(c.add("center_plate_F_lb"));
+    for (const char* side : {"L", "R"}) c.sideBearing.push_back(c.add(std::string("side_bearing_F_") + side + "_lb"));
+}
+
+/// The equivalent wheelset's wheel loads (two wheels each) and lifts, left then right.
+inline void declareEquivalentWheelsetChannels(ChannelLayout& c) {
+    for (const char* side : {"L", "R"}) {
+        const int idx = c.add(std::string("wheels_F_") + side + "_lb");
+        c.truckSideWheelLoad.push_back(idx);
+        c.singleWheelLoad.push_back(idx);
+    }
+    for (const char* side : {"L", "R"}) c.wheelLift.push_back(c.add(std::string("wheel_lift_F1_") + side + "_in"));
+}
+
 }  // namespace rockroll
