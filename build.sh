@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(build-essential cmake libsimbody-dev libeigen3-dev libtomlplusplus-dev libcli11-dev
-          libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsundials-dev python3-matplotlib)
+          libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsundials-dev libssl-dev python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,5 +1,6 @@
 #include "app/Commands.h"
 #include "app/Output.h"
+#include "app/Provenance.h"
 
 #include "bespoke/DescribingFunction.h"
 #include "mbmodel/ModalAnalysis.h"
@@ -24,6 +25,9 @@ void printSummary(const RunSummary& s, const Scenario& sc) {
                s.amplitudeIn, s.speedMph, s.durationS);
     fmt::print("  scenario: {}\n", sc.source);
     fmt::print("  regime: {}\n", s.regime);
+    if (s.stoppedAtS >= 0)
+        fmt::print("  STOPPED at t = {:.3f} s: {}\n  (the numbers below cover the run up to that time)\n", s.stoppedAtS,
+                   s.stopReason);
     fmt::print("  max roll                         {:9.2f} deg   (steady amplitude {:.2f} deg)\n", s.maxRollDeg,
                s.steadyRollAmplitudeDeg);
     fmt::print("  max wheel lift                   {:9.2f} in\n", s.maxWheelLiftIn);
@@ -47,6 +51,11 @@ int runDefaultCase() {
     const ScenarioRun run = runScenario(sc);
     const RunSummary& s = run.summary;
     printSummary(s, sc);
+    if (run.result.stop) {
+        fmt::print(stderr, "rockroll: the car {} at t = {:.3f} s: {}\n", run.result.stop->regime, run.result.stop->time,
+                   run.result.stop->reason);
+        return kExitDerailed;
+    }
     fmt::print("\nBeside the 1976 report (its §3.1, Figs 8–10: 70-ton loaded, 0.75 in, 16.5 mph):\n");
     fmt::print("  {:<36}{:>14}{:>18}\n", "quantity", "rockroll", "report");
     fmt::print("  {:<36}{:>14}{:>18}\n", "regime", s.regime, "severe");
@@ -61,18 +70,21 @@ int runDefaultCase() {
 }
 
 int runCommand(const RunOptions& o) {
-    Scenario sc = loadScenarioFile(o.scenario);
+    if (o.scenario.empty() == !o.fromSummary)
+        throw ScenarioError("run: give either a scenario file or --from-summary PATH/summary.json, not both");
+    Scenario sc = o.fromSummary ? loadScenarioFromSummary(*o.fromSummary) : loadScenarioFile(o.scenario);
     if (o.model) sc.model = *o.model;
     if (o.speedMph) sc.speed = *o.speedMph * units::mph;
     if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
     if (o.durationS) sc.run.duration = *o.durationS;
+    if (o.maxWallS) sc.run.limits.maxWallTime = *o.maxWallS;
     const ScenarioRun run = runScenario(sc);
 
-    const fs::path dir = o.outDir.empty()
-                             ? fs::path("out") / fmt::format("{}-{}", fs::path(o.scenario).stem().string(), sc.model)
-                             : fs::path(o.outDir);
+    const std::string stem = fs::path(o.fromSummary ? sc.source : o.scenario).stem().string();
+    const fs::path dir = o.outDir.empty() ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir);
     fs::create_directories(dir);
-    const nlohmann::ordered_json j = toJson(run.summary);
+    nlohmann::ordered_json j = toJson(run.summary);
+    j["provenance"] = makeProvenance(sc, getCommandLine());
     writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
     writeAtomically(dir / "summary.json", [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 
@@ -81,6 +93,11 @@ int runCommand(const RunOptions& o) {
     } else {
         printSummary(run.summary, sc);
         fmt::print("  wrote {} and {}\n", (dir / "history.csv").string(), (dir / "summary.json").string());
+    }
+    if (run.result.stop) {
+        fmt::print(stderr, "rockroll: the car {} at t = {:.3f} s: {}\n", run.result.stop->regime, run.result.stop->time,
+                   run.result.stop->reason);
+        return kExitDerailed;
     }
     return 0;
 }
@@ -118,6 +135,7 @@ int steadyCommand(const SteadyOptions& o) {
                              ? "not computed"
                              : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
                                "at the stretch's middle point";
+        j["provenance"] = makeProvenance(sc, getCommandLine());
         j["branches"] = nlohmann::ordered_json::array();
         for (const auto& b : branches) {
             nlohmann::ordered_json jb;
@@ -161,6 +179,7 @@ int sweepCommand(const SweepOptions& o) {
         Scenario base = loadScenarioFile(file);
         if (o.model) base.model = *o.model;
         if (o.durationS) base.run.duration = *o.durationS;
+        if (o.maxWallS) base.run.limits.maxWallTime = *o.maxWallS;
         std::vector<double> amplitudes = o.amplitudesIn;
         if (amplitudes.empty()) amplitudes.push_back(base.track.amplitude / units::inch);
         for (double a : amplitudes)
@@ -207,6 +226,12 @@ int sweepCommand(const SweepOptions& o) {
             }
             j["direction"] = p.direction;
             j["start"] = p.start;
+            Scenario at = specs[i].scenario;
+            at.speed = p.speedMph * units::mph;
+            j["provenance"] = makeProvenance(at, getCommandLine());
+            j["provenance"]["sweep"] = {{"from_mph", specs[i].fromMph}, {"to_mph", specs[i].toMph},
+                                        {"step_mph", specs[i].stepMph}, {"direction", p.direction},
+                                        {"fresh", specs[i].fresh}, {"ramp_time_s", specs[i].rampTime}};
             all.push_back(j);
         }
     if (o.json) {
@@ -259,6 +284,7 @@ int modesCommand(const ModesOptions& o) {
         j["model"] = sc.model;
         j["car"] = sc.car.name;
         j["linearization"] = "about static equilibrium, every contact closed, Coulomb friction removed";
+        j["provenance"] = makeProvenance(sc, getCommandLine());
         j["modes"] = nlohmann::ordered_json::array();
         for (const Mode& m : modes) {
             nlohmann::ordered_json jm{{"name", m.name},           {"frequency_hz", m.frequencyHz},

@@ -6,10 +6,19 @@
 
 namespace rockroll::app {
 
+/// Exit codes (documented in --help and README.md).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitNumericalFailure = 3;
+inline constexpr int kExitFailedPoints = 4;
+inline constexpr int kExitDerailed = 5;  ///< derailed or overturned
+
 struct RunOptions {
     std::string scenario;               ///< file path
     std::optional<std::string> model;
     std::optional<double> speedMph, amplitudeIn, durationS;
+    std::optional<double> maxWallS;     ///< wall-time limit of the run [s]
+    std::optional<std::string> fromSummary;  ///< rerun the run a summary.json describes
     std::string outDir;                 ///< empty: out/<scenario>-<model>
     bool json = false;
 };
@@ -29,6 +38,7 @@ struct SweepOptions {
     double fromMph = 0, toMph = 0, stepMph = 0;
     std::string direction = "both";
     std::optional<double> durationS;
+    std::optional<double> maxWallS;  ///< wall-time limit of each speed's run [s]
     int jobs = 0;  ///< 0: one per core
     bool json = false, fresh = false;
 };

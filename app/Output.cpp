@@ -1,5 +1,6 @@
 #include "app/Output.h"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <fstream>
 
@@ -27,6 +28,13 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["static_wheel_load_lb"] = s.staticWheelLoadLb;
     j["static_center_plate_load_lb"] = s.staticCenterPlateLoadLb;
     j["regime"] = s.regime;
+    j["stopped_at_s"] = s.stoppedAtS >= 0 ? nlohmann::ordered_json(s.stoppedAtS) : nlohmann::ordered_json(nullptr);
+    j["stop_reason"] = s.stopReason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.stopReason);
+    j["center_plate_separation_longest_s"] = s.centerPlateSeparationLongestS;
+    j["center_plate_separation_total_s"] = s.centerPlateSeparationTotalS;
+    j["wheel_lift_longest_s"] = s.wheelLiftLongestS;
+    j["energy_balance_error"] = std::isfinite(s.energyBalanceError) ? nlohmann::ordered_json(s.energyBalanceError)
+                                                                    : nlohmann::ordered_json(nullptr);
     j["filter"] = s.filter;
     j["sim_time_s"] = s.simTimeS;
     j["wall_time_s"] = s.wallTimeS;

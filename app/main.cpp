@@ -1,5 +1,6 @@
 // rockroll: freight-car rock-and-roll simulator (command line).
 #include "app/Commands.h"
+#include "app/Provenance.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ScenarioLoader.h"
 
@@ -14,7 +15,10 @@ int main(int argc, char** argv) {
 
     app::RunOptions run;
     CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
-    runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
+    runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->check(CLI::ExistingFile);
+    runCmd->add_option("--from-summary", run.fromSummary,
+                       "rerun exactly the run a summary.json describes (its provenance), instead of a scenario file")
+        ->check(CLI::ExistingFile);
     runCmd->add_option("--model", run.model,
                        "halfcar | fullcar (Simbody) | eom (hand-written equations of motion) | reduced (massless "
                        "truck, report 2.2); overrides the scenario")
@@ -24,6 +28,8 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber);
     runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(CLI::PositiveNumber);
     runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
+    runCmd->add_option("--max-wall-s", run.maxWallS, "wall-time limit; past it the run fails (exit 3) [s]")
+        ->check(CLI::PositiveNumber);
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
 
     app::SteadyOptions steady;
@@ -59,6 +65,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"up", "down", "both"}));
     sweepCmd->add_option("--duration-s", sweep.durationS, "simulated time per speed [s]")->check(CLI::PositiveNumber);
     sweepCmd->add_option("--jobs", sweep.jobs, "parallel sweeps (default: one per core)")->check(CLI::NonNegativeNumber);
+    sweepCmd->add_option("--max-wall-s", sweep.maxWallS, "wall-time limit of each speed's run [s]")
+        ->check(CLI::PositiveNumber);
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
 
@@ -80,6 +88,12 @@ int main(int argc, char** argv) {
                             "criteria: minimum single-wheel load over static")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
 
+    cli.footer("Exit codes: 0 ok; 2 bad input (scenario file, key, value and what was expected); 3 numerical "
+               "failure (integrator failure, step limit, runaway state, wall-time limit), with time and state; "
+               "4 a sweep or study finished with failed points; 5 the car derailed or overturned (run stopped, "
+               "history kept); 1 any other error.");
+    cli.set_version_flag("--version", app::getVersionString());
+    app::setCommandLine(argc, argv);
     CLI11_PARSE(cli, argc, argv);
     try {
         if (runCmd->parsed()) return app::runCommand(run);
@@ -90,10 +104,10 @@ int main(int argc, char** argv) {
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());
-        return 2;
+        return app::kExitBadInput;
     } catch (const NumericalFailure& e) {
         fmt::print(stderr, "rockroll: numerical failure: {}\n", e.what());
-        return 3;
+        return app::kExitNumericalFailure;
     } catch (const std::exception& e) {
         fmt::print(stderr, "rockroll: error: {}\n", e.what());
         return 1;

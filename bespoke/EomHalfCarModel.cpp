@@ -170,6 +170,7 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
     for (int side : {0, 1}) {
         const double share = simp_.equalLateralShares ? 0.5 : (total > 0 ? f.wheel[side] / total : 0.0);
         const double e = tread[side].x.x() - g.railY[side];
+        f.wheelOffset[side] = e;
         f.wheelLateral[side] = -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
         applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
     }
@@ -202,7 +203,7 @@ void EomHalfCarModel::declareChannels() {
     }
     c.add("bolster_roll_F_deg");
     c.add("bolster_lateral_F_in");
-    declareEquivalentWheelsetChannels(c);
+    declareEquivalentWheelsetChannels(c, true);
 }
 
 void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out) const {
@@ -230,6 +231,7 @@ void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>
     out.push_back(y[3 * Bolster + 1] / in);
     for (int side : {0, 1}) out.push_back(f.wheel[side] / lb);
     for (int side : {0, 1}) out.push_back(f.wheelLift[side] / in);
+    out.push_back((f.wheelOffset[0] + f.wheelOffset[1]) / 2 / in);
 }
 
 std::vector<std::string> EomHalfCarModel::getStateNames() const {

@@ -71,6 +71,7 @@ public:
         std::array<double, 2> rim{0, 0}, sideBearing{0, 0}, spring{0, 0}, lateralSpring{0, 0};
         std::array<BristleFrictionState, 4> wedge{};
         std::array<double, 2> wheel{0, 0}, wheelLateral{0, 0}, wheelLift{0, 0};
+        std::array<double, 2> wheelOffset{0, 0};  ///< tread − rail, lateral [m]
         double pin = 0;  ///< on the car body, +y
         Eigen::Matrix<double, kNumDofs, 1> generalized = Eigen::Matrix<double, kNumDofs, 1>::Zero();
     };

@@ -41,18 +41,24 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
     result.history.names = {"t_s"};
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
     std::vector<double> row;
-    auto record = [&](double t, const State& y) {
+    RunGuard guard(model.getChannels(), settings.limits);
+    auto record = [&](double t, const State& y) -> const std::vector<double>& {
         model.calcChannels(t, y, row);
         std::vector<double> full{t};
         full.insert(full.end(), row.begin(), row.end());
         result.history.samples.push_back(std::move(full));
+        return result.history.samples.back();
     };
-    record(0, y0);
+    guard.check(record(0, y0), result);
     const long nOut = std::lround(settings.duration * settings.outputRate);
-    for (long k = 1; k <= nOut; ++k) {
+    for (long k = 1; k <= nOut && !result.stop; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
-        integ.advanceTo(tOut);
-        record(tOut, Eigen::Map<const State>(integ.getState().data()));
+        try {
+            integ.advanceTo(tOut);
+        } catch (const IntegrationFailure& e) {
+            throw NumericalFailure(e.what(), e.getTime());
+        }
+        guard.check(record(tOut, Eigen::Map<const State>(integ.getState().data())), result);
     }
     result.steps = integ.getNumSteps();
     result.finalState = integ.getState();

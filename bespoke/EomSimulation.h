@@ -2,6 +2,7 @@
 // Runs the equation-of-motion half car with CVODE BDF and records its channels
 // at a fixed output rate, as the Simbody driver does.
 #include "bespoke/EomHalfCarModel.h"
+#include "mbmodel/RunLimits.h"
 #include "mbmodel/TimeHistory.h"
 
 namespace rockroll {
@@ -10,6 +11,7 @@ struct EomRunSettings {
     double duration = 0;      ///< [s]
     double outputRate = 500;  ///< [Hz]
     double accuracy = 1e-4;   ///< CVODE relative tolerance
+    RunLimits limits;         ///< resolved (resolveRunLimits) before the run
 };
 
 /// Absolute tolerances per state: accuracy × a length, speed or deflection scale.

@@ -83,7 +83,7 @@ void ReducedHalfCarModel::declareChannels() {
     c.add("center_pin_F_lb");
     c.add("bolster_roll_F_deg");
     c.add("wheelset_roll_F_deg");
-    declareEquivalentWheelsetChannels(c);
+    declareEquivalentWheelsetChannels(c, false);
     c.add("truck_support_mode");  // 0 two-point … 7 no contact (TruckEquilibrium.h)
     c.add("truck_mode_consistent");
 }
@@ -139,7 +139,7 @@ void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memo
 }  // namespace
 
 RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats,
-                          const std::vector<double>& initial) {
+                          const std::vector<double>& initial, const RunLimits& limits) {
     using State = ReducedHalfCarModel::State;
     const auto wall0 = std::chrono::steady_clock::now();
     const double h = ReducedHalfCarModel::kStep;
@@ -151,7 +151,8 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
     std::vector<double> row;
     ReducedRunStatistics st;
-    auto accept = [&](double t) {
+    RunGuard guard(model.getChannels(), limits);
+    auto accept = [&](double t) -> const std::vector<double>& {
         const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem);
         mem.mode = e.truck.mode;
         mem.compression = e.truck.compression;
@@ -165,10 +166,12 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         std::vector<double> full{t};
         full.insert(full.end(), row.begin(), row.end());
         result.history.samples.push_back(std::move(full));
+        return result.history.samples.back();
     };
-    accept(0);
+    guard.check(accept(0), result);
     const long n = std::lround(duration / h);
-    for (long k = 0; k < n; ++k) {
+    long k = 0;
+    for (; k < n && !result.stop; ++k) {
         const double t = k * h;
         const State k1 = model.evaluate(t, y, mem).derivative;
         const State k2 = model.evaluate(t + h / 2, y + h / 2 * k1, mem).derivative;
@@ -180,7 +183,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
                 "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",
                 t + h, mem.mode.describe(), y[0], y[1], y[2]), t + h);
         }
-        accept(t + h);
+        guard.check(accept(t + h), result);
         ++st.steps;
     }
     result.steps = st.steps;
@@ -188,7 +191,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     result.finalState.push_back(mem.rollBolster);
     result.finalState.push_back(mem.rollWheelset);
     result.realizations = 4 * st.steps + st.steps + 1;
-    result.simTime = n * h;
+    result.simTime = k * h;
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     if (stats) *stats = st;
     return result;

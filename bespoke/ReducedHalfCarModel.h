@@ -16,6 +16,7 @@
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/TruckEquilibrium.h"
 #include "mbmodel/ChannelLayout.h"
+#include "mbmodel/RunLimits.h"
 #include "mbmodel/TimeHistory.h"
 
 #include <Eigen/Dense>
@@ -71,7 +72,9 @@ struct ReducedRunStatistics {
 /// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz). From static
 /// equilibrium, or from `initial` (a previous RunResult::finalState: the car
 /// body state followed by the truck's memory).
+/// `limits` (resolved) stop the run on derailment or overturning and fail it on
+/// runaway or the wall-time limit (RunGuard).
 RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats = nullptr,
-                          const std::vector<double>& initial = {});
+                          const std::vector<double>& initial = {}, const RunLimits& limits = {});
 
 }  // namespace rockroll

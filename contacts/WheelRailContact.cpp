@@ -15,6 +15,7 @@ WheelRailForces WheelRailContact::calcForces(const State& s) const {
         out.normal[i] = calcUnilateralNormalForce(delta, rail.zDot[i] - v[2], law_.vertical);
         out.lift[i] = std::max(0.0, -delta);
         e[i] = p[1] - yRail_[i];
+        out.offset[i] = e[i];
         eDot[i] = v[1];
     }
     const double total = out.normal[0] + out.normal[1];

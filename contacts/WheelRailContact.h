@@ -35,6 +35,7 @@ struct WheelRailForces {
     std::array<double, 2> normal{0, 0};   ///< N_L, N_R [N]
     std::array<double, 2> lateral{0, 0};  ///< on the wheelset [N]
     std::array<double, 2> lift{0, 0};     ///< tread-to-rail gap, ≥ 0 [m]
+    std::array<double, 2> offset{0, 0};   ///< e_i = y_tread,i − y_rail,i [m]
 };
 
 class WheelRailContact : public SimTK::Force::Custom::Implementation {

@@ -14,6 +14,14 @@ struct ChannelLayout {
     std::vector<int> truckSideWheelLoad;   ///< two wheels, one truck side [lb]
     std::vector<int> singleWheelLoad;      ///< one wheel (or equivalent) [lb]
     std::vector<int> wheelLift;            ///< [in]
+    /// One (equivalent) wheelset: its two wheels' lifts [in] and its lateral
+    /// displacement from the track centre line at rail-head height [in]
+    /// (-1 where the formulation holds the wheelset laterally by construction).
+    struct Wheelset {
+        int liftLeft = -1, liftRight = -1, lateral = -1;
+    };
+    std::vector<Wheelset> wheelsets;
+    int energyStored = -1, energyInput = -1, energyDissipated = -1;  ///< cumulative [J]
 
     int add(std::string name) {
         names.push_back(std::move(name));
@@ -38,14 +46,20 @@ inline void declareHalfCarBodyChannels(ChannelLayout& c) {
     for (const char* side : {"L", "R"}) c.sideBearing.push_back(c.add(std::string("side_bearing_F_") + side + "_lb"));
 }
 
-/// The equivalent wheelset's wheel loads (two wheels each) and lifts, left then right.
-inline void declareEquivalentWheelsetChannels(ChannelLayout& c) {
+/// The equivalent wheelset's wheel loads (two wheels each) and lifts, left then
+/// right; then its lateral displacement when the formulation has one.
+inline void declareEquivalentWheelsetChannels(ChannelLayout& c, bool hasLateral) {
     for (const char* side : {"L", "R"}) {
         const int idx = c.add(std::string("wheels_F_") + side + "_lb");
         c.truckSideWheelLoad.push_back(idx);
         c.singleWheelLoad.push_back(idx);
     }
     for (const char* side : {"L", "R"}) c.wheelLift.push_back(c.add(std::string("wheel_lift_F1_") + side + "_in"));
+    ChannelLayout::Wheelset w;
+    w.liftLeft = c.wheelLift[c.wheelLift.size() - 2];
+    w.liftRight = c.wheelLift.back();
+    if (hasLateral) w.lateral = c.add("wheelset_lateral_F1_in");
+    c.wheelsets.push_back(w);
 }
 
 }  // namespace rockroll

@@ -35,6 +35,22 @@ Extremes maxOverChannels(const TimeHistory& h, const std::vector<int>& channels,
 }
 }  // namespace
 
+Durations calcDurations(const std::vector<bool>& on, double dt) {
+    Durations d;
+    long run = 0;
+    for (bool b : on) {
+        run = b ? run + 1 : 0;
+        d.total += b ? dt : 0;
+        d.longest = std::max(d.longest, double(run) * dt);
+    }
+    return d;
+}
+
+std::string classifyRegime(double separationLongest, bool sideBearingContact, double severeSeparationTime) {
+    if (separationLongest >= severeSeparationTime * (1 - 1e-9)) return "severe";
+    return sideBearingContact ? "moderate" : "light";
+}
+
 RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const SummaryOptions& opt) {
     const TimeHistory& h = run.history;
     if (h.samples.size() < 4) throw std::invalid_argument("run too short to summarise");
@@ -82,10 +98,27 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.staticWheelLoadLb = staticRow[layout.truckSideWheelLoad.front() + 1];
     r.staticCenterPlateLoadLb = staticRow[layout.centerPlate.front() + 1];
 
-    bool sideBearingContact = sb.rawMax > 0;
-    double minPlate = std::numeric_limits<double>::infinity();
-    for (int c : layout.centerPlate) minPlate = std::min(minPlate, minOf(getColumn(h, c)));
-    r.regime = minPlate <= 0 ? "severe" : sideBearingContact ? "moderate" : "light";
+    const bool sideBearingContact = sb.rawMax > 0;
+    for (int c : layout.centerPlate) {
+        const auto x = getColumn(h, c);
+        std::vector<bool> open(x.size());
+        for (size_t i = 0; i < x.size(); ++i) open[i] = x[i] <= 0;
+        const Durations d = calcDurations(open, dt);
+        r.centerPlateSeparationLongestS = std::max(r.centerPlateSeparationLongestS, d.longest);
+        r.centerPlateSeparationTotalS = std::max(r.centerPlateSeparationTotalS, d.total);
+    }
+    for (int c : layout.wheelLift) {
+        const auto x = getColumn(h, c);
+        std::vector<bool> lifted(x.size());
+        for (size_t i = 0; i < x.size(); ++i) lifted[i] = x[i] > 0;
+        r.wheelLiftLongestS = std::max(r.wheelLiftLongestS, calcDurations(lifted, dt).longest);
+    }
+    r.regime = classifyRegime(r.centerPlateSeparationLongestS, sideBearingContact, opt.severeSeparationTime);
+    if (run.stop) {
+        r.regime = run.stop->regime;
+        r.stoppedAtS = run.stop->time;
+        r.stopReason = run.stop->reason;
+    }
 
     r.simTimeS = run.simTime;
     r.wallTimeS = run.wallTime;

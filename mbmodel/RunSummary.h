@@ -3,6 +3,7 @@
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,13 @@ struct RunSummary {
     double maxCenterPlateLoadLb = 0, rawMaxCenterPlateLoadLb = 0;
     double staticWheelLoadLb = 0;        ///< two wheels, one truck side
     double staticCenterPlateLoadLb = 0;
-    std::string regime;                  ///< light | moderate | severe
+    std::string regime;                  ///< light | moderate | severe | derailed | overturned
+    double centerPlateSeparationLongestS = 0;  ///< longest unbroken full unloading of a center plate [s]
+    double centerPlateSeparationTotalS = 0;    ///< a center plate's total unloaded time (the larger truck) [s]
+    double wheelLiftLongestS = 0;              ///< longest unbroken lift of any wheel [s]
+    double stoppedAtS = -1;              ///< < 0: ran to the end; else when a run limit stopped it [s]
+    std::string stopReason;              ///< what stopped it, with values and limit
+    double energyBalanceError = std::numeric_limits<double>::quiet_NaN();  ///< |W − ΔE − D| / max(|W|, D); NaN: not audited
     std::string filter;
     double simTimeS = 0, wallTimeS = 0;
     long steps = 0;
@@ -33,8 +40,23 @@ struct SummaryOptions {
     double forcingPeriod = 0;    ///< L_r / V [s], for the steady window
     int steadyCycles = 3;        ///< cycles at the end used for the steady amplitude
     double filterCutoffHz = 20;
+    /// Severe rocking needs a center plate fully unloaded this long without a
+    /// break (a shorter bounce is not a rock-off) [s].
+    double severeSeparationTime = 0.010;
     std::vector<double> staticReference;  ///< history row of the static state; empty: the run's first sample
 };
+
+/// Longest unbroken stretch and total time with `on[i]` true, on samples spaced
+/// `dt` apart: each sample stands for dt, so one sample counts dt.
+struct Durations {
+    double longest = 0, total = 0;
+};
+Durations calcDurations(const std::vector<bool>& on, double dt);
+
+/// The report's regimes (its §1; brief §7) from durations: severe when a center
+/// plate stays fully unloaded (load ≤ 0) for at least severeSeparationTime;
+/// moderate when a side bearing carries load; light otherwise.
+std::string classifyRegime(double centerPlateSeparationLongest, bool sideBearingContact, double severeSeparationTime);
 
 /// Computes the summary of a run recorded with `layout` (history columns are
 /// "t_s" followed by the layout's channels). Static values come from sample 0.

@@ -72,44 +72,54 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
         s0.setTime(0);
     }
     integ->initialize(s0);
+    // Bounded internal steps per stepTo call, so the wall-time guard is checked
+    // even when the integrator crawls.
+    integ->setInternalStepLimit(2000);
+    RunGuard guard(model.getChannels(), settings.limits);
 
     std::vector<double> channels;
-    auto record = [&](const State& s) {
+    auto record = [&](const State& s) -> const std::vector<double>& {
         model.getSystem().realize(s, Stage::Velocity);  // every channel is a function of q, u, z, t
         model.calcChannels(s, channels);
         std::vector<double> row{s.getTime()};
         row.insert(row.end(), channels.begin(), channels.end());
         result.history.samples.push_back(std::move(row));
+        return result.history.samples.back();
     };
-    record(integ->getState());
+    auto fail = [&](const std::string& why) {
+        return NumericalFailure(fmt::format("integration failed ({}, accuracy {:g}) near t = {:.6f} s: {}\n"
+                                            "last good state:\n{}",
+                                            settings.integrator.method, settings.integrator.accuracy,
+                                            integ->getTime(), why, describeState(model, integ->getState())),
+                                integ->getTime());
+    };
+    guard.check(record(integ->getState()), result);
 
     const long nOut = std::lround(settings.duration * settings.outputRate);
-    for (long k = 1; k <= nOut; ++k) {
+    for (long k = 1; k <= nOut && !result.stop; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
         try {
-            // stepTo may return early at the start of the interval; repeat until tOut.
-            while (integ->getTime() < tOut && !integ->isSimulationOver()) integ->stepTo(tOut);
+            // stepTo returns early at the internal step limit or at the start of
+            // the interval; repeat until tOut.
+            while (integ->getTime() < tOut && !integ->isSimulationOver()) {
+                const Integrator::SuccessfulStepStatus status = integ->stepTo(tOut);
+                if (status == Integrator::EndOfSimulation) break;
+                guard.checkWallTime(integ->getTime());
+            }
+        } catch (const NumericalFailure&) {
+            throw;
         } catch (const std::exception& e) {
-            throw NumericalFailure(fmt::format("integration failed ({}) near t = {:.6f} s: {}\nlast good state:\n{}",
-                                               settings.integrator.method, integ->getTime(), e.what(),
-                                               describeState(model, integ->getState())),
-                                   integ->getTime());
+            throw fail(e.what());
         }
-        if (integ->isSimulationOver() &&
-            integ->getTerminationReason() != Integrator::ReachedFinalTime &&
-            integ->getTime() < tOut - 1e-12)
-            throw NumericalFailure(fmt::format("integration stopped ({}) at t = {:.6f} s: {}\nstate:\n{}",
-                                               settings.integrator.method, integ->getTime(),
-                                               Integrator::getTerminationReasonString(integ->getTerminationReason()),
-                                               describeState(model, integ->getState())),
-                                   integ->getTime());
+        if (integ->isSimulationOver() && integ->getTime() < tOut - 1e-12)
+            throw fail(Integrator::getTerminationReasonString(integ->getTerminationReason()));
         const State& s = integ->getState();
         for (int i = 0; i < s.getNY(); ++i)
-            if (!std::isfinite(s.getY()[i]))
-                throw NumericalFailure(fmt::format("state became non-finite at t = {:.6f} s:\n{}", s.getTime(),
-                                                   describeState(model, s)),
-                                       s.getTime());
-        record(s);
+            if (!std::isfinite(s.getY()[i])) throw fail("the state became non-finite");
+        if (std::abs(s.getTime() - tOut) > 1e-9 * std::max(1.0, tOut))
+            throw fail(fmt::format("the integrator returned at t = {:.9f} s instead of the output time {:.9f} s",
+                                   s.getTime(), tOut));
+        guard.check(record(s), result);
     }
     result.steps = integ->getNumStepsTaken();
     const State& sEnd = integ->getState();

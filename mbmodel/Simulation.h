@@ -2,6 +2,7 @@
 // The simulation driver shared by every Simbody model: integrator choice and
 // accuracy, fixed-rate recording, and failure reports with time and state.
 #include "mbmodel/RockingModel.h"
+#include "mbmodel/RunLimits.h"
 #include "mbmodel/TimeHistory.h"
 
 #include <stdexcept>
@@ -20,16 +21,7 @@ struct RunSettings {
     double duration = 20;           ///< [s]
     double outputRate = 500;        ///< samples per second [Hz]
     IntegratorSettings integrator;
-};
-
-/// Thrown when integration fails; what() names the time and the state.
-class NumericalFailure : public std::runtime_error {
-public:
-    NumericalFailure(const std::string& what, double time) : std::runtime_error(what), time_(time) {}
-    double getTime() const { return time_; }
-
-private:
-    double time_;
+    RunLimits limits;               ///< resolved (resolveRunLimits) before the run
 };
 
 std::vector<std::string> getIntegratorNames();

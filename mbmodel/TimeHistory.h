@@ -1,5 +1,6 @@
 #pragma once
 // A recorded run, shared by every model (Simbody and bespoke). No Simbody dependency.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,6 +17,24 @@ struct TimeHistory {
     }
 };
 
+/// Why a run stopped before its end time (derailment, overturning).
+struct RunStop {
+    std::string regime;  ///< "derailed" | "overturned"
+    std::string reason;  ///< what was detected, with the values and the limit
+    double time = 0;     ///< [s]
+};
+
+/// Thrown when a run fails numerically (integrator failure, step limit,
+/// non-finite or runaway state, wall-time limit); what() names the time and the state.
+class NumericalFailure : public std::runtime_error {
+public:
+    NumericalFailure(const std::string& what, double time) : std::runtime_error(what), time_(time) {}
+    double getTime() const { return time_; }
+
+private:
+    double time_;
+};
+
 struct RunResult {
     TimeHistory history;
     long steps = 0;
@@ -23,6 +42,7 @@ struct RunResult {
     double simTime = 0;   ///< [s]
     double wallTime = 0;  ///< [s]
     std::vector<double> finalState;  ///< the model's state at the end, flat, to continue from
+    std::optional<RunStop> stop;     ///< set when a run limit stopped the run early
 };
 
 }  // namespace rockroll

@@ -184,6 +184,13 @@ void Truck::declareChannels(ChannelLayout& c) const {
                 c.singleWheelLoad.push_back(c.add(fmt::format("wheel_{}{}_{}_lb", T, i + 1, kSideName[side])));
             c.wheelLift.push_back(c.add(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[side])));
         }
+    for (size_t i = 0; i < wheelsets_.size(); ++i) {
+        ChannelLayout::Wheelset w;
+        w.liftLeft = c.find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kLeft]));
+        w.liftRight = c.find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kRight]));
+        w.lateral = c.add(fmt::format("wheelset_lateral_{}{}_in", T, i + 1));
+        c.wheelsets.push_back(w);
+    }
 }
 
 double* Truck::calcChannels(const State& s, double* out) const {
@@ -220,6 +227,7 @@ double* Truck::calcChannels(const State& s, double* out) const {
             if (wheel.size() > 1) *out++ = wheel[i].normal[side] / lb;
             *out++ = wheel[i].lift[side] / in;
         }
+    for (const auto& w : wheel) *out++ = (w.offset[0] + w.offset[1]) / 2 / in;
     return out;
 }
 

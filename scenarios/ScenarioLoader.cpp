@@ -3,9 +3,11 @@
 #include "scenarios/DefaultScenario.h"
 
 #include <fmt/format.h>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <openssl/evp.h>
 #include <toml++/toml.h>
 
 namespace rockroll {
@@ -122,6 +124,8 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
         if (value < 0 || (value == 0 && !info->mayBeZero))
             car.fail(info->key, TableReader::describe(v), info->mayBeZero ? "a value ≥ 0" : "a positive value");
         sc.car.*(info->member) = value;
+        const auto text = v.value<std::string>();
+        sc.carOverrides.emplace_back(info->key, text ? *text : TableReader::describe(v));
     }
     car.rejectUnknown();
 }
@@ -193,6 +197,38 @@ void readEom(const toml::table& root, const std::string& src, Scenario& sc) {
     eom.rejectUnknown();
 }
 
+/// [limits]: the run monitor's physical limits (mbmodel/RunLimits.h) and the
+/// severe-regime duration. Every key is optional and range-checked.
+void readLimits(const toml::table& root, const std::string& src, Scenario& sc) {
+    using units::Dimension;
+    TableReader lim(getTable(root, "limits", src, false), src, "limits.");
+    RunLimits& l = sc.run.limits;
+    auto ranged = [&](const char* key, Dimension dim, double fallback, double lo, double hi, bool loOpen,
+                      const std::string& expected) {
+        if (!lim.has(key)) return fallback;
+        const double v = lim.getQuantity(key, dim);
+        if (!std::isfinite(v) || v > hi || v < lo || (loOpen && v == lo))
+            lim.fail(key, TableReader::describe(*lim.require(key)), expected);
+        return v;
+    };
+    l.enabled = lim.getBool("enabled", l.enabled);
+    l.flangeHeight = ranged("flange_height", Dimension::Length, l.flangeHeight, 0, 3 * units::inch, true,
+                            "a length in (0, 3 in]");
+    l.flangeClearance = ranged("flange_clearance", Dimension::Length, l.flangeClearance, 0, 3 * units::inch, false,
+                               "a length in [0, 3 in]");
+    l.wheelsOffTime = ranged("wheels_off_time", Dimension::Time, l.wheelsOffTime, 0, 10, true,
+                             "a time in (0, 10 s] (omit it for the flanges' free-flight time)");
+    l.rolloverAngle = ranged("rollover_angle", Dimension::Angle, l.rolloverAngle, 0, 90 * units::degree, true,
+                             "an angle in (0, 90 deg] (omit it for the static rollover angle of the car)");
+    l.energyRunawayFraction = ranged("energy_runaway_fraction", Dimension::Dimensionless, l.energyRunawayFraction,
+                                     0, 100, true, "a number in (0, 100]");
+    l.maxWallTime = ranged("max_wall_time", Dimension::Time, l.maxWallTime, 0, 7 * 86400, true,
+                           "a time in (0 s, 7 days]");
+    sc.severeSeparationTime = ranged("severe_separation", Dimension::Time, sc.severeSeparationTime, 0, 1, false,
+                                     "a time in [0, 1 s]");
+    lim.rejectUnknown();
+}
+
 }  // namespace
 
 Scenario parseScenario(std::string_view text, const std::string& source) {
@@ -211,19 +247,123 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
     readTrack(root, source, sc);
     readRun(root, source, sc);
     readEom(root, source, sc);
+    readLimits(root, source, sc);
     for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown({"eom"});
+    top.rejectUnknown({"eom", "limits"});
     return sc;
 }
 
 Scenario loadScenarioFile(const std::string& path) {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw ScenarioError(fmt::format("{}: cannot open scenario file", path));
     std::stringstream buf;
     buf << in.rdbuf();
-    return parseScenario(buf.str(), path);
+    Scenario sc = parseScenario(buf.str(), path);
+    sc.sourceSha256 = calcSha256(buf.str());
+    return sc;
 }
 
-Scenario getDefaultScenario() { return parseScenario(kDefaultScenarioToml, "<embedded default: 70ton-loaded.toml>"); }
+Scenario getDefaultScenario() {
+    Scenario sc = parseScenario(kDefaultScenarioToml, "<embedded default: 70ton-loaded.toml>");
+    sc.sourceSha256 = calcSha256(kDefaultScenarioToml);
+    return sc;
+}
+
+std::string calcSha256(std::string_view bytes) {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int n = 0;
+    if (!EVP_Digest(bytes.data(), bytes.size(), digest, &n, EVP_sha256(), nullptr))
+        throw std::runtime_error("SHA-256 failed (OpenSSL EVP_Digest)");
+    std::string hex;
+    for (unsigned int i = 0; i < n; ++i) hex += fmt::format("{:02x}", digest[i]);
+    return hex;
+}
+
+namespace {
+/// SI value with the SI unit whose factor is exactly 1, shortest round-trip digits.
+std::string formatSi(double value, units::Dimension dim) {
+    using units::Dimension;
+    const char* unit = "";
+    switch (dim) {
+        case Dimension::Length: unit = "m"; break;
+        case Dimension::Speed: unit = "m/s"; break;
+        case Dimension::Force: unit = "N"; break;
+        case Dimension::Stiffness: unit = "N/m"; break;
+        case Dimension::Time: unit = "s"; break;
+        case Dimension::Frequency: unit = "Hz"; break;
+        case Dimension::MomentOfInertia: unit = "kg*m^2"; break;
+        case Dimension::Angle: unit = "rad"; break;
+        case Dimension::AngularStiffness: unit = "N*m/rad"; break;
+        case Dimension::Dimensionless: break;
+    }
+    return fmt::format("{} {}", value, unit);
+}
+}  // namespace
+
+std::string formatScenarioToml(const Scenario& sc) {
+    using units::Dimension;
+    toml::table root;
+    if (!sc.description.empty()) root.insert("description", sc.description);
+    toml::table car;
+    car.insert("base", sc.car.name);
+    for (const CarParameterInfo& info : getCarParameterTable()) {
+        const double v = sc.car.*(info.member);
+        if (info.dimension == Dimension::Dimensionless) car.insert(info.key, v);
+        else car.insert(info.key, formatSi(v, info.dimension));
+    }
+    root.insert("car", std::move(car));
+
+    toml::table track;
+    track.insert("amplitude", formatSi(sc.track.amplitude, Dimension::Length));
+    track.insert("rail_length", formatSi(sc.track.railLength, Dimension::Length));
+    track.insert("rails", int64_t(sc.track.rails));
+    track.insert("mirror", sc.track.mirror);
+    track.insert("entry", sc.entry == TrackEntry::Lead ? "lead" : "synchronized");
+    if (!sc.track.measured.empty()) {
+        toml::array rows;
+        for (const MeasuredTrackSample& m : sc.track.measured)
+            rows.push_back(toml::table{{"distance", formatSi(m.distance, Dimension::Length)},
+                                       {"cross_level", formatSi(m.crossLevel, Dimension::Length)},
+                                       {"profile", formatSi(m.profile, Dimension::Length)}});
+        track.insert("measured", std::move(rows));
+    }
+    root.insert("track", std::move(track));
+
+    toml::table run;
+    run.insert("speed", formatSi(sc.speed, Dimension::Speed));
+    run.insert("duration", formatSi(sc.run.duration, Dimension::Time));
+    run.insert("model", sc.model);
+    run.insert("output_rate", formatSi(sc.run.outputRate, Dimension::Frequency));
+    run.insert("filter_cutoff", formatSi(sc.filterCutoffHz, Dimension::Frequency));
+    root.insert("run", std::move(run));
+
+    toml::table integ;
+    integ.insert("method", sc.run.integrator.method);
+    integ.insert("accuracy", sc.run.integrator.accuracy);
+    integ.insert("max_step", formatSi(sc.run.integrator.maxStepSize, Dimension::Time));
+    root.insert("integrator", std::move(integ));
+
+    root.insert("eom", toml::table{{"linear_springs", sc.eom.linearSprings},
+                                   {"lock_bolster_lateral", sc.eom.lockBolsterLateral},
+                                   {"elastic_contacts", sc.eom.elasticContacts},
+                                   {"equal_lateral_shares", sc.eom.equalLateralShares},
+                                   {"small_angles", sc.eom.smallAngles}});
+
+    const RunLimits& l = sc.run.limits;
+    toml::table limits{{"enabled", l.enabled},
+                       {"flange_height", formatSi(l.flangeHeight, Dimension::Length)},
+                       {"flange_clearance", formatSi(l.flangeClearance, Dimension::Length)},
+                       {"energy_runaway_fraction", l.energyRunawayFraction},
+                       {"max_wall_time", formatSi(l.maxWallTime, Dimension::Time)},
+                       {"severe_separation", formatSi(sc.severeSeparationTime, Dimension::Time)}};
+    // Zero means "from the car": leave it out so the default is derived again.
+    if (l.wheelsOffTime > 0) limits.insert("wheels_off_time", formatSi(l.wheelsOffTime, Dimension::Time));
+    if (l.rolloverAngle > 0) limits.insert("rollover_angle", formatSi(l.rolloverAngle, Dimension::Angle));
+    root.insert("limits", std::move(limits));
+
+    std::ostringstream os;
+    os << toml::toml_formatter(root, toml::format_flags::none);
+    return os.str() + "\n";
+}
 
 }  // namespace rockroll

@@ -16,6 +16,9 @@ namespace rockroll {
 
 struct Scenario {
     std::string source;          ///< file path, or "<embedded default>"
+    std::string sourceSha256;    ///< SHA-256 of the scenario file's bytes (hex)
+    /// [car] parameters given in the file, key → the text given (e.g. "0.25 in").
+    std::vector<std::pair<std::string, std::string>> carOverrides;
     std::string description;
     CarParameters car;
     TrackSpec track;
@@ -23,8 +26,9 @@ struct Scenario {
     double speed = 0;            ///< [m/s]
     std::string model;           ///< halfcar | fullcar | eom | reduced
     EomSimplifications eom;      ///< [eom] table: the report's §4.1 simplifications
-    RunSettings run;
+    RunSettings run;             ///< run.limits: the [limits] table, unresolved (0 = from the car)
     double filterCutoffHz = 20;
+    double severeSeparationTime = 0.010;  ///< [limits] severe_separation [s]
 };
 
 class ScenarioError : public std::runtime_error {
@@ -33,6 +37,15 @@ public:
 };
 
 Scenario loadScenarioFile(const std::string& path);
+
+/// The resolved scenario as a complete TOML document: every car parameter, the
+/// track, run, integrator, [eom] and [limits] values, each in SI with its unit
+/// and printed to round-trip exactly, so parseScenario of it rebuilds a
+/// Scenario that runs bit for bit like this one.
+std::string formatScenarioToml(const Scenario& sc);
+
+/// SHA-256 of a byte string, lowercase hex.
+std::string calcSha256(std::string_view bytes);
 Scenario parseScenario(std::string_view tomlText, const std::string& sourceName);
 /// The default case: 70-ton loaded, 0.75 in, 16.5 mph, full car, 20 s (report Figs 8–10).
 Scenario getDefaultScenario();

@@ -43,7 +43,8 @@ ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOpt
     try {
         if (sc.model == "eom") {
             const EomHalfCarModel model = makeScenarioEomModel(sc, start);
-            const EomRunSettings settings{sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy};
+            const EomRunSettings settings{sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy,
+                                          resolveRunLimits(sc.run.limits, sc.car)};
             if (start.state.empty()) return summarize(simulateEom(model, settings), model, opt);
             return summarize(simulateEom(model, settings, Eigen::Map<const EomHalfCarModel::State>(start.state.data())),
                              model, opt);
@@ -51,13 +52,17 @@ ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOpt
         if (sc.model == "reduced") {
             const ReducedHalfCarModel model(
                 sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase));
-            return summarize(simulateReduced(model, sc.run.duration, nullptr, start.state), model, opt);
+            return summarize(
+                simulateReduced(model, sc.run.duration, nullptr, start.state, resolveRunLimits(sc.run.limits, sc.car)),
+                model, opt);
         }
     } catch (const IntegrationFailure& e) {
         throw NumericalFailure(e.what(), e.getTime());
     }
     const auto model = makeScenarioModel(sc, start);
-    return summarize(simulate(*model, sc.run, start.state), *model, opt);
+    RunSettings settings = sc.run;
+    settings.limits = resolveRunLimits(sc.run.limits, sc.car);
+    return summarize(simulate(*model, settings, start.state), *model, opt);
 }
 }  // namespace
 
@@ -66,6 +71,7 @@ ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     opt.forcingPeriod = sc.track.railLength / sc.speed;
     opt.filterCutoffHz = sc.filterCutoffHz;
     opt.staticReference = start.staticReference;
+    opt.severeSeparationTime = sc.severeSeparationTime;
     ScenarioRun run = runModel(sc, start, opt);
     run.finalDistance = makeMotion(sc, start).calcDistance(run.result.simTime);
     run.summary.model = sc.model;

@@ -35,7 +35,8 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
             const ScenarioRun run = runScenario(sc, next);
             p.summary = run.summary;
             if (staticReference.empty()) staticReference = run.staticReference;
-            if (spec.fresh) {
+            if (spec.fresh || run.result.stop) {
+                // A derailed or overturned car is a result; the next speed starts from rest.
                 next = RunStart{};
             } else {
                 next.state = run.result.finalState;
@@ -43,8 +44,9 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
                 next.speed = sc.speed;
                 next.rampTime = spec.rampTime;
             }
-        } catch (const NumericalFailure& e) {
-            // Reported, not dropped; the next speed starts again from rest.
+        } catch (const std::exception& e) {
+            // Numerical failures (and any other error of this point) are reported,
+            // not dropped; the next speed starts again from rest.
             p.failed = true;
             p.error = e.what();
             next = RunStart{};

@@ -1,0 +1,82 @@
+#include "app/Provenance.h"
+
+#include "app/BuildInfo.h"
+
+#include <fmt/format.h>
+#include <fstream>
+
+namespace rockroll::app {
+
+namespace {
+std::string& commandLine() {
+    static std::string line;
+    return line;
+}
+}  // namespace
+
+void setCommandLine(int argc, char** argv) {
+    std::string& line = commandLine();
+    line.clear();
+    for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+}
+const std::string& getCommandLine() { return commandLine(); }
+
+std::string getVersionString() { return fmt::format("rockroll {} (commit {})", kVersion, kGitCommit); }
+
+nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& command) {
+    nlohmann::ordered_json p;
+    p["rockroll_version"] = kVersion;
+    p["git_commit"] = kGitCommit;
+    p["command"] = command;
+    p["scenario_file"] = sc.source;
+    p["scenario_sha256"] = sc.sourceSha256;
+    p["model"] = sc.model;
+    p["integrator"] = {{"method", sc.run.integrator.method},
+                       {"accuracy", sc.run.integrator.accuracy},
+                       {"max_step_s", sc.run.integrator.maxStepSize},
+                       {"output_rate_hz", sc.run.outputRate}};
+    p["car_base"] = sc.car.name;
+    nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
+    for (const auto& [key, text] : sc.carOverrides) overrides[key] = text;
+    p["car_overrides"] = overrides;
+    nlohmann::ordered_json params = nlohmann::ordered_json::object();
+    for (const CarParameterInfo& info : getCarParameterTable()) {
+        const double si = sc.car.*(info.member);
+        const std::string unit = info.dimension == units::Dimension::Dimensionless ? "" : info.displayUnit;
+        const double shown = unit.empty() ? si : si / units::parseQuantity(fmt::format("1 {}", unit), info.dimension);
+        params[info.key] = {{"value", shown}, {"unit", unit}};
+    }
+    p["car_parameters"] = params;
+    p["scenario_toml"] = formatScenarioToml(sc);
+    return p;
+}
+
+Scenario loadScenarioFromSummary(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw ScenarioError(fmt::format("{}: cannot open summary file", path));
+    nlohmann::json j;
+    try {
+        in >> j;
+    } catch (const nlohmann::json::exception& e) {
+        throw ScenarioError(fmt::format("{}: not a JSON summary: {}", path, e.what()));
+    }
+    const nlohmann::json* prov = j.contains("provenance") ? &j["provenance"] : nullptr;
+    if (!prov || !prov->contains("scenario_toml") || !(*prov)["scenario_toml"].is_string())
+        throw ScenarioError(fmt::format("{}: key 'provenance.scenario_toml' is missing: expected a summary.json "
+                                        "written by `rockroll run` (version 0.9 or later)",
+                                        path));
+    if (j.contains("start") && j["start"] != "rest")
+        throw ScenarioError(fmt::format("{}: key 'start' = {}: expected \"rest\"; this point continued a speed sweep "
+                                        "from the previous speed's state, so rerun the sweep instead",
+                                        path, j["start"].dump()));
+    Scenario sc = parseScenario((*prov)["scenario_toml"].get<std::string>(), path + " (provenance.scenario_toml)");
+    sc.sourceSha256 = (*prov).value("scenario_sha256", "");
+    sc.source = (*prov).value("scenario_file", path);
+    sc.carOverrides.clear();
+    if (prov->contains("car_overrides") && (*prov)["car_overrides"].is_object())
+        for (const auto& [key, text] : (*prov)["car_overrides"].items())
+            sc.carOverrides.emplace_back(key, text.is_string() ? text.get<std::string>() : text.dump());
+    return sc;
+}
+
+}  // namespace rockroll::app

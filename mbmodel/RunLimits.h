@@ -1,0 +1,70 @@
+#pragma once
+// Physical limits of a run and the monitor that stops it when a limit is
+// passed: derailment, overturning, runaway energy and non-finite values, and a
+// wall-time guard. Simbody-free; every time-domain model calls RunGuard once
+// per recorded sample. Defaults and their sources: docs/model.md, "Run limits".
+#include "mbmodel/CarParameters.h"
+#include "mbmodel/ChannelLayout.h"
+#include "mbmodel/TimeHistory.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace rockroll {
+
+struct RunLimits {
+    bool enabled = true;
+    /// Wheel flange height above the tread: 1 in, the AAR-1B freight wheel
+    /// profile (AAR Manual of Standards and Recommended Practices, Section G).
+    double flangeHeight = 1.0 * units::inch;
+    /// Lateral travel of a wheelset from the track centre line to flange
+    /// contact: 3/8 in, half the 3/4 in total free play of a new AAR wheelset
+    /// in standard 56.5 in gauge (assumed; docs/model.md).
+    double flangeClearance = 0.375 * units::inch;
+    /// Both wheels of a wheelset off their rails longer than this is a
+    /// derailment. 0 = the free-flight time for the flanges to rise clear of
+    /// the rail heads and fall back, 2·√(2·h_f/g) (0.144 s for h_f = 1 in).
+    double wheelsOffTime = 0;
+    /// Car-body roll that puts its centre of gravity over the rail:
+    /// 0 = the static rollover angle atan((gauge/2)/h_cg) from the car geometry.
+    double rolloverAngle = 0;
+    /// Runaway: stored energy exceeding the rails' work less dissipation by more
+    /// than this fraction of max(|work|, dissipated, floor).
+    double energyRunawayFraction = 0.5;
+    /// Energy floor of the runaway test [J]; 0 = car-body weight × 1 in.
+    double energyRunawayFloor = 0;
+    /// Wall-clock limit of one run [s]; past it the run fails numerically.
+    double maxWallTime = 3600;
+};
+
+/// Static rollover angle of the car body: its centre of gravity (at rest, springs
+/// compressed) directly above one rail, atan((gauge/2) / h_cg) [rad].
+double calcStaticRolloverAngle(const CarParameters& car);
+
+/// Replaces the "from the car" zeros with their values for this car.
+RunLimits resolveRunLimits(RunLimits limits, const CarParameters& car);
+
+/// Watches a run's recorded samples. Derailment and overturning stop the run
+/// (RunResult::stop is set, the history is kept); non-finite values, runaway
+/// energy and the wall-time limit throw NumericalFailure.
+class RunGuard {
+public:
+    RunGuard(const ChannelLayout& layout, const RunLimits& limits);
+
+    /// After each recorded row (row[0] = t, then the layout's channels).
+    /// Returns true when the run must stop; the reason is in `result.stop`.
+    bool check(const std::vector<double>& row, RunResult& result);
+    /// Throws NumericalFailure once the wall-time limit has passed.
+    void checkWallTime(double simTime) const;
+
+private:
+    const ChannelLayout& layout_;
+    const RunLimits limits_;
+    const std::chrono::steady_clock::time_point start_;
+    std::vector<double> airborneSince_;  ///< per wheelset; NaN while a wheel is on its rail
+    double energy0_ = 0;
+    bool first_ = true;
+};
+
+}  // namespace rockroll

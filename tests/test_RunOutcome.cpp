@@ -1,0 +1,106 @@
+// What `rockroll run` does with a run that overturns, one that cannot finish,
+// and a rerun from its own summary — through the real command line.
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path makeTempDir(const std::string& name) {
+    const fs::path d = fs::path(ROCKROLL_TEST_TMP) / name;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+int runCli(const std::string& args, const fs::path& errFile) {
+    const std::string cmd = std::string(ROCKROLL_BIN) + " " + args + " > /dev/null 2> '" + errFile.string() + "'";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+const std::string kScenarios = ROCKROLL_SCENARIO_DIR;
+
+TEST(RunOutcome, FiftyInchCrossLevelOverturnsWithExitFiveAndKeepsTheHistory) {
+    const fs::path dir = makeTempDir("overturn");
+    const int code = runCli("run " + kScenarios + "/70ton-loaded.toml --model halfcar --amplitude-in 50 --duration-s 20 "
+                            "--out '" + (dir / "out").string() + "'",
+                            dir / "err.txt");
+    EXPECT_EQ(code, 5) << readFile(dir / "err.txt");
+    const auto j = nlohmann::json::parse(readFile(dir / "out" / "summary.json"));
+    const std::string regime = j["regime"];
+    EXPECT_TRUE(regime == "overturned" || regime == "derailed") << regime;
+    const double stopped = j["stopped_at_s"];
+    EXPECT_GT(stopped, 0);
+    EXPECT_LT(stopped, 20);
+    EXPECT_FALSE(j["stop_reason"].get<std::string>().empty());
+    // History kept up to the stop: its last time is the stop time.
+    std::istringstream csv(readFile(dir / "out" / "history.csv"));
+    std::string line, last;
+    while (std::getline(csv, line))
+        if (!line.empty()) last = line;
+    EXPECT_NEAR(std::stod(last.substr(0, last.find(','))), stopped, 1e-6);
+}
+
+TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
+    const fs::path dir = makeTempDir("walltime");
+    const int code = runCli("run " + kScenarios + "/70ton-loaded.toml --model fullcar --duration-s 20 --max-wall-s 0.3 "
+                            "--out '" + (dir / "out").string() + "'",
+                            dir / "err.txt");
+    EXPECT_EQ(code, 3);
+    EXPECT_NE(readFile(dir / "err.txt").find("wall-time limit"), std::string::npos) << readFile(dir / "err.txt");
+}
+
+TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
+    const fs::path dir = makeTempDir("reproduce");
+    // A scenario with a car override and a limit, and command-line overrides on top.
+    std::string toml = readFile(kScenarios + "/70ton-loaded.toml");
+    toml.replace(toml.find("[track]"), 7, "side_bearing_clearance = \"0.1875 in\"\nspring_vertical_rate = \"28 kN/mm\"\n\n[track]");
+    toml += "\n[limits]\nflange_clearance = \"0.4 in\"\n";
+    std::ofstream(dir / "case.toml") << toml;
+    ASSERT_EQ(runCli("run '" + (dir / "case.toml").string() + "' --model halfcar --speed-mph 15.3 --amplitude-in 0.8 "
+                     "--duration-s 3 --out '" + (dir / "a").string() + "'",
+                     dir / "err_a.txt"),
+              0)
+        << readFile(dir / "err_a.txt");
+    fs::remove(dir / "case.toml");  // the rerun must not need the original file
+    ASSERT_EQ(runCli("run --from-summary '" + (dir / "a" / "summary.json").string() + "' --out '" +
+                         (dir / "b").string() + "'",
+                     dir / "err_b.txt"),
+              0)
+        << readFile(dir / "err_b.txt");
+    EXPECT_EQ(readFile(dir / "a" / "history.csv"), readFile(dir / "b" / "history.csv"));
+    auto a = nlohmann::ordered_json::parse(readFile(dir / "a" / "summary.json"));
+    auto b = nlohmann::ordered_json::parse(readFile(dir / "b" / "summary.json"));
+    EXPECT_NE(a["provenance"]["command"], b["provenance"]["command"]);
+    for (auto* j : {&a, &b}) {
+        j->erase("wall_time_s");
+        (*j)["provenance"].erase("command");
+    }
+    EXPECT_EQ(a.dump(2), b.dump(2));
+    EXPECT_EQ(a["provenance"]["car_overrides"]["side_bearing_clearance"], "0.1875 in");
+    EXPECT_EQ(a["provenance"]["model"], "halfcar");
+    EXPECT_EQ(a["provenance"]["scenario_sha256"].get<std::string>().size(), 64u);
+    EXPECT_EQ(a["speed_mph"], 15.3);
+}
+
+TEST(RunOutcome, FromSummaryWithoutProvenanceIsABadInput) {
+    const fs::path dir = makeTempDir("badsummary");
+    std::ofstream(dir / "summary.json") << R"({"model": "halfcar"})";
+    EXPECT_EQ(runCli("run --from-summary '" + (dir / "summary.json").string() + "'", dir / "err.txt"), 2);
+    EXPECT_NE(readFile(dir / "err.txt").find("provenance.scenario_toml"), std::string::npos);
+}
+
+}  // namespace
