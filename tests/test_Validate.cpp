@@ -116,6 +116,7 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
 /// its sampled drawn values are those columns times the stated scale.
 std::vector<std::string> checkPlotSidecar(const fs::path& dir, const std::string& png) {
     std::vector<std::string> errors;
+    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
     nlohmann::json side;
     try {
         side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
@@ -202,6 +203,7 @@ std::set<Drawn> expectedLines(const std::string& png) {
 std::vector<std::string> checkPlotColumns(const fs::path& dir, const std::string& png) {
     const std::set<Drawn> expected = expectedLines(png);
     if (expected.empty()) return {png + ": a plot this test does not know; add what it must draw here"};
+    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
     nlohmann::json side;
     try {
         side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
@@ -234,6 +236,58 @@ std::string join(const std::vector<std::string>& v) {
     for (const auto& x : v) s += x + "\n";
     return s;
 }
+
+struct ReadBack {
+    int csvs = 0, jsons = 0, pngs = 0;
+};
+
+/// Every file validate wrote to `out` reads back (gtest failures for what does not).
+ReadBack checkValidateOutput(const fs::path& out, bool quick) {
+    // Every file reads back. JSON: parses; validation.json names only files that exist.
+    ReadBack n;
+    std::set<std::string> listed;
+    for (const auto& e : fs::directory_iterator(out)) {
+        const std::string name = e.path().filename().string();
+        if (e.path().extension() == ".json") {
+            ++n.jsons;
+            nlohmann::json j;
+            try {
+                j = nlohmann::json::parse(readFile(e.path().string()));
+            } catch (const std::exception& x) {
+                ADD_FAILURE() << name << ": " << x.what();
+                continue;
+            }
+            if (name != "validation.json") continue;
+            for (const char* key : {"timehistories", "sweeps", "steady"}) {
+                if (!(j.contains(key) && j[key].is_array() && !j[key].empty())) {
+                    ADD_FAILURE() << "validation.json: no " << key;
+                    continue;
+                }
+                for (const auto& item : j[key]) {
+                    const std::string file = item.at("file").get<std::string>();
+                    listed.insert(file);
+                    EXPECT_TRUE(fs::exists(out / file)) << "validation.json lists " << file;
+                }
+            }
+        } else if (e.path().extension() == ".csv") {
+            ++n.csvs;
+            EXPECT_EQ(join(checkValidateCsv(e.path(), quick)), "");
+        }
+    }
+    for (const auto& e : fs::directory_iterator(out))
+        if (e.path().extension() == ".csv")
+            EXPECT_TRUE(listed.count(e.path().filename().string())) << e.path().filename() << " is not in validation.json";
+    // Plots: each PNG's sidecar draws the expected columns, and its values are the CSV's.
+    for (const auto& e : fs::directory_iterator(out)) {
+        if (e.path().extension() != ".png") continue;
+        ++n.pngs;
+        const std::string png = e.path().filename().string();
+        EXPECT_EQ(join(checkPlotColumns(out, png)), "");
+        EXPECT_EQ(join(checkPlotSidecar(out, png)), "");
+    }
+    return n;
+}
+
 }  // namespace
 
 TEST(Validate, CommittedReportNamesAnExistingCommit) {
@@ -265,44 +319,24 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     for (const auto& e : std::filesystem::directory_iterator(out))
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
 
-    // Every file reads back. JSON: parses; validation.json names only files that exist.
-    int csvs = 0, jsons = 0, pngs = 0;
-    std::set<std::string> listed;
-    for (const auto& e : fs::directory_iterator(out)) {
-        const std::string name = e.path().filename().string();
-        if (e.path().extension() == ".json") {
-            ++jsons;
-            nlohmann::json j;
-            ASSERT_NO_THROW(j = nlohmann::json::parse(readFile(e.path().string()))) << name;
-            if (name != "validation.json") continue;
-            for (const char* key : {"timehistories", "sweeps", "steady"}) {
-                ASSERT_TRUE(j.contains(key) && j[key].is_array() && !j[key].empty()) << "validation.json: " << key;
-                for (const auto& item : j[key]) {
-                    const std::string file = item.at("file").get<std::string>();
-                    listed.insert(file);
-                    EXPECT_TRUE(fs::exists(out / file)) << "validation.json lists " << file;
-                }
-            }
-        } else if (e.path().extension() == ".csv") {
-            ++csvs;
-            EXPECT_EQ(join(checkValidateCsv(e.path(), true)), "");
-        }
-    }
-    for (const auto& e : fs::directory_iterator(out))
-        if (e.path().extension() == ".csv")
-            EXPECT_TRUE(listed.count(e.path().filename().string())) << e.path().filename() << " is not in validation.json";
-    // Plots: each PNG's sidecar draws the expected columns, and its values are the CSV's.
-    for (const auto& e : fs::directory_iterator(out)) {
-        if (e.path().extension() != ".png") continue;
-        ++pngs;
-        const std::string png = e.path().filename().string();
-        EXPECT_EQ(join(checkPlotColumns(out, png)), "");
-        EXPECT_EQ(join(checkPlotSidecar(out, png)), "");
-    }
+    const ReadBack n = checkValidateOutput(out, true);
     // Quick run: 4 time histories, 6 sweeps, 1 steady; a time-history plot, 2 per sweep case, 1 steady.
-    EXPECT_EQ(csvs, 11);
-    EXPECT_EQ(pngs, 14);
-    EXPECT_EQ(jsons, pngs + 1);
+    EXPECT_EQ(n.csvs, 11);
+    EXPECT_EQ(n.pngs, 14);
+    EXPECT_EQ(n.jsons, n.pngs + 1);
+}
+
+// The committed results/ read back as the quick run's do (results/ is regenerated
+// by `rockroll validate`; a file written by an older writer fails here).
+TEST(Validate, CommittedResultsReadBack) {
+    const fs::path results = fs::path(kSource) / "results";
+    const std::string report = readFile((results / "REPORT.md").string());
+    ASSERT_FALSE(report.empty()) << "results/REPORT.md is missing";
+    const bool quick = report.find("`rockroll validate --quick`") != std::string::npos;
+    const ReadBack n = checkValidateOutput(results, quick);
+    EXPECT_GT(n.csvs, 0);
+    EXPECT_GT(n.pngs, 0);
+    EXPECT_EQ(n.jsons, n.pngs + 1) << "every PNG has its sidecar, plus validation.json";
 }
 
 // The read-back checks can fail: a shifted header, a wrong column in a plot, or a
