@@ -139,7 +139,12 @@ int steadyCommand(const SteadyOptions& o) {
         j["branches"] = nlohmann::ordered_json::array();
         for (const auto& b : branches) {
             nlohmann::ordered_json jb;
-            jb["stable"] = b.stable;
+            // null, never true, when nothing decided it (--stability none, or no evidence).
+            jb["stable"] = b.stability == Stability::NotComputed ? nlohmann::ordered_json(nullptr)
+                                                                  : nlohmann::ordered_json(b.stability == Stability::Stable);
+            jb["stability"] = b.stability == Stability::Stable     ? "stable"
+                              : b.stability == Stability::Unstable ? "unstable"
+                                                                   : "not computed";
             jb["points"] = nlohmann::ordered_json::array();
             for (const auto& p : b.points)
                 jb["points"].push_back({{"speed_mph", p.speedMph},
@@ -163,13 +168,13 @@ int steadyCommand(const SteadyOptions& o) {
         return 0;
     }
     fmt::print("rockroll steady — describing function, {} car\ninput: {}\n\n", sc.car.name, inputNote);
-    fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>8}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
+    fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>14}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
                "side brg lb", "|mu|max", "stable");
     for (const auto& b : branches)
         for (const auto& p : b.points)
-            fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>8}\n", p.speedMph, p.rollAmplitudeDeg,
+            fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>14}\n", p.speedMph, p.rollAmplitudeDeg,
                        p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
-                       b.stable ? "yes" : "no");
+                       toString(b.stability));
     return 0;
 }
 

@@ -1,4 +1,5 @@
 #include "app/Output.h"
+#include "mbmodel/CsvWriter.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -56,12 +57,16 @@ void writeAtomically(const std::filesystem::path& path, const std::function<void
     std::filesystem::rename(tmp, path);
 }
 
-void writeHistoryCsv(std::ostream& out, const TimeHistory& h) {
-    for (size_t i = 0; i < h.names.size(); ++i) out << (i ? "," : "") << h.names[i];
-    out << '\n';
+void writeHistoryCsv(std::ostream& out, const TimeHistory& h, const std::vector<std::string>& columns, int digits) {
+    const std::vector<std::string>& names = columns.empty() ? h.names : columns;
+    std::vector<int> index;
+    for (const auto& c : names) index.push_back(h.column(c));
+    CsvWriter csv(out, names);
+    std::vector<CsvCell> cells;
     for (const auto& row : h.samples) {
-        for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << fmt::format("{:.7g}", row[i]);
-        out << '\n';
+        cells.clear();
+        for (int k : index) cells.push_back(CsvCell::significant(row.at(k), digits));
+        csv.writeRow(cells);
     }
 }
 

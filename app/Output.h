@@ -8,6 +8,8 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <string>
+#include <vector>
 
 namespace rockroll::app {
 
@@ -17,6 +19,9 @@ nlohmann::ordered_json toJson(const RunSummary& s);
 /// sees a half-written file.
 void writeAtomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
-void writeHistoryCsv(std::ostream& out, const TimeHistory& h);
+/// The history as CSV (mbmodel/CsvWriter): every channel, or only `columns` in
+/// that order (each must exist), with `digits` significant digits.
+void writeHistoryCsv(std::ostream& out, const TimeHistory& h, const std::vector<std::string>& columns = {},
+                     int digits = 7);
 
 }  // namespace rockroll::app

@@ -3,6 +3,7 @@
 #include "app/Commands.h"
 #include "app/Output.h"
 #include "bespoke/DescribingFunction.h"
+#include "mbmodel/CsvWriter.h"
 #include "mbmodel/ModalAnalysis.h"
 #include "scenarios/SpeedSweep.h"
 
@@ -122,16 +123,8 @@ std::string makeTimeHistories(const Settings& s, nlohmann::ordered_json& meta) {
     row("wall time, s", "—", [](const RunSummary& x) { return fmt::format("{:.1f}", x.wallTimeS); });
     for (size_t i = 0; i < models.size(); ++i) {
         const TimeHistory& h = runs[i].result.history;
-        writeAtomically(s.out / fmt::format("timehistory_{}.csv", models[i]), [&](std::ostream& o) {
-            std::vector<int> cols;
-            for (const auto& c : kHistoryColumns) cols.push_back(h.column(c));
-            for (size_t k = 0; k < cols.size(); ++k) o << (k ? "," : "") << kHistoryColumns[k];
-            o << "\n";
-            for (const auto& r : h.samples) {
-                for (size_t k = 0; k < cols.size(); ++k) o << (k ? "," : "") << fmt::format("{:.6g}", r[cols[k]]);
-                o << "\n";
-            }
-        });
+        writeAtomically(s.out / fmt::format("timehistory_{}.csv", models[i]),
+                        [&](std::ostream& o) { writeHistoryCsv(o, h, kHistoryColumns, 6); });
         meta["timehistories"].push_back({{"model", models[i]}, {"file", fmt::format("timehistory_{}.csv", models[i])}});
     }
     meta["defaultRuns"] = nlohmann::ordered_json::array();
@@ -222,20 +215,23 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
 
 void writeSweepCsv(const Settings& s, const SweepResult& r) {
     writeAtomically(s.out / fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model), [&](std::ostream& o) {
-        o << "direction,start,speed_mph,failed,max_roll_deg,steady_roll_amplitude_deg,peak_to_peak_roll_deg,"
-             "max_wheel_lift_in,max_wheel_load_lb,min_wheel_load_ratio,max_side_bearing_load_lb,"
-             "max_center_plate_load_lb,regime\n";
+        CsvWriter csv(o, {"direction", "start", "speed_mph", "failed", "max_roll_deg", "steady_roll_amplitude_deg",
+                          "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "min_wheel_load_ratio",
+                          "max_side_bearing_load_lb", "max_center_plate_load_lb", "regime"});
         for (const auto* list : {&r.up, &r.down})
             for (const auto& p : *list) {
                 const RunSummary& x = p.summary;
                 if (p.failed) {
-                    o << fmt::format("{},{},{},1,,,,,,,,,failed\n", p.direction, p.start, p.speedMph);
+                    const CsvCell none = CsvCell::empty();
+                    csv.writeRow({p.direction, p.start, p.speedMph, 1, none, none, none, none, none, none, none, none,
+                                  "failed"});
                     continue;
                 }
-                o << fmt::format("{},{},{},0,{:.4f},{:.4f},{:.4f},{:.4f},{:.0f},{:.4f},{:.0f},{:.0f},{}\n", p.direction,
-                                 p.start, p.speedMph, x.maxRollDeg, x.steadyRollAmplitudeDeg, x.peakToPeakRollDeg,
-                                 x.maxWheelLiftIn, x.maxWheelLoadLb, x.minWheelLoadRatio, x.maxSideBearingLoadLb,
-                                 x.maxCenterPlateLoadLb, x.regime);
+                csv.writeRow({p.direction, p.start, p.speedMph, 0, CsvCell::fixed(x.maxRollDeg, 4),
+                              CsvCell::fixed(x.steadyRollAmplitudeDeg, 4), CsvCell::fixed(x.peakToPeakRollDeg, 4),
+                              CsvCell::fixed(x.maxWheelLiftIn, 4), CsvCell::fixed(x.maxWheelLoadLb, 0),
+                              CsvCell::fixed(x.minWheelLoadRatio, 4), CsvCell::fixed(x.maxSideBearingLoadLb, 0),
+                              CsvCell::fixed(x.maxCenterPlateLoadLb, 0), x.regime});
             }
     });
 }
@@ -318,7 +314,7 @@ std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateB
                                                   bool stableOnly) {
     std::vector<std::pair<bool, SteadyStatePoint>> pts;
     for (const auto& b : branches)
-        for (const auto& p : b.points) pts.push_back({b.stable, p});
+        for (const auto& p : b.points) pts.push_back({b.stability == Stability::Stable, p});
     std::optional<std::array<double, 3>> best;
     for (size_t k = 1; k < pts.size(); ++k) {
         const auto& a = pts[k - 1].second;
@@ -515,14 +511,15 @@ std::string makeDescribingFunction(const Settings& s, const SteadyByAmplitude& s
         const std::string file = fmt::format("steady_70ton-loaded_{:.2f}in.csv", amps[i]);
         std::vector<SteadyStatePoint> pts;
         writeAtomically(s.out / file, [&](std::ostream& o) {
-            o << "branch,stable (1 yes, 0 no, -1 not computed),speed_mph,roll_amplitude_deg,wheel_lift_fraction,max_wheel_load_lb,max_side_bearing_load_lb,folds_before\n";
+            CsvWriter csv(o, {"branch", "stable", "speed_mph", "roll_amplitude_deg", "wheel_lift_fraction",
+                              "max_wheel_load_lb", "max_side_bearing_load_lb", "folds_before"});
             for (size_t b = 0; b < all[i].size(); ++b)
                 for (const auto& p : all[i][b].points) {
                     pts.push_back(p);
-                    o << fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.0f},{:.0f},{}\n", b,
-                                     s.quick ? -1 : (all[i][b].stable ? 1 : 0), p.speedMph,
-                                     p.rollAmplitudeDeg, p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb,
-                                     p.foldsBefore);
+                    csv.writeRow({b, toString(all[i][b].stability), CsvCell::fixed(p.speedMph, 4),
+                                  CsvCell::fixed(p.rollAmplitudeDeg, 4), CsvCell::fixed(p.wheelLiftFraction, 4),
+                                  CsvCell::fixed(p.maxWheelLoadLb, 0), CsvCell::fixed(p.maxSideBearingLoadLb, 0),
+                                  p.foldsBefore});
                 }
         });
         const int folds = pts.empty() ? 0 : pts.back().foldsBefore;

@@ -5,6 +5,7 @@
 #include "scenarios/ScenarioLoader.h"
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <fmt/format.h>
 
 int main(int argc, char** argv) {
@@ -95,6 +96,8 @@ int main(int argc, char** argv) {
     cli.set_version_flag("--version", app::getVersionString());
     app::setCommandLine(argc, argv);
     CLI11_PARSE(cli, argc, argv);
+    // ROCKROLL_PARSE_ONLY=1: check the command line and exit 0 without running (tests/test_DocCommands.cpp).
+    if (const char* parseOnly = std::getenv("ROCKROLL_PARSE_ONLY"); parseOnly && std::string(parseOnly) == "1") return 0;
     try {
         if (runCmd->parsed()) return app::runCommand(run);
         if (steadyCmd->parsed()) return app::steadyCommand(steady);

@@ -1,7 +1,14 @@
 #!/usr/bin/python3
 """Plots for `rockroll validate`: reads results/validation.json and the CSV files
 it lists, writes PNGs beside them. Run with Debian's /usr/bin/python3
-(python3-matplotlib)."""
+(python3-matplotlib).
+
+Beside every NAME.png it writes NAME.png.json, which lists each data line drawn:
+the CSV file, the rows used (`where`: column -> value, all must match), the
+column names for x and y with their scale factors, the number of points, and a
+few of the drawn values taken back from matplotlib. tests/test_Validate.cpp
+compares them with the CSV columns read by name, so a plot drawing the wrong
+column fails a test."""
 import csv
 import json
 import os
@@ -14,55 +21,94 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read_csv(path):
+    """Rows as dicts; refuses a file whose rows do not match its header."""
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return rows
+        records = list(csv.reader(f))
+    if not records:
+        raise ValueError(f"{path}: empty CSV")
+    header = records[0]
+    if len(set(header)) != len(header):
+        raise ValueError(f"{path}: repeated column names {header}")
+    rows = []
+    for n, rec in enumerate(records[1:], start=2):
+        if len(rec) != len(header):
+            raise ValueError(f"{path}: line {n} has {len(rec)} fields, header has {len(header)}")
+        rows.append(dict(zip(header, rec)))
+    return header, rows
 
 
-def column(rows, name):
-    return [float(r[name]) for r in rows if r.get(name, "") != ""]
+def column(rows, name, scale=1.0):
+    """Every row's value in column `name` (a missing column or empty cell is an error)."""
+    return [float(r[name]) * scale for r in rows]
+
+
+def select(rows, **where):
+    return [r for r in rows if all(r[k] == v for k, v in where.items())]
+
+
+# Lines drawn from CSV data, per figure, for the sidecar written by save().
+_drawn = {}
+
+
+def plot_csv(ax, csv_file, rows, where, x, y, xscale=1.0, yscale=1.0, **style):
+    """Draws column y against column x of the rows of csv_file matching `where`."""
+    pts = select(rows, **where)
+    (line,) = ax.plot(column(pts, x, xscale), column(pts, y, yscale), **style)
+    _drawn.setdefault(id(ax.figure), []).append(
+        {"line": line, "csv": csv_file, "where": where, "x": x, "y": y, "x_scale": xscale, "y_scale": yscale})
+    return line
 
 
 def save(fig, path):
     tmp = path + ".tmp.png"
     fig.savefig(tmp, dpi=110, bbox_inches="tight")
+    lines = []
+    for d in _drawn.pop(id(fig), []):
+        xd, yd = d["line"].get_xdata(), d["line"].get_ydata()
+        n = len(xd)
+        picks = sorted({0, n // 4, n // 2, (3 * n) // 4, n - 1}) if n else []
+        lines.append({"csv": d["csv"], "where": d["where"], "x": d["x"], "y": d["y"], "x_scale": d["x_scale"],
+                      "y_scale": d["y_scale"], "label": d["line"].get_label(), "points": n,
+                      "samples": [{"index": i, "x": float(xd[i]), "y": float(yd[i])} for i in picks]})
     plt.close(fig)
+    with open(path + ".json.tmp", "w") as f:
+        json.dump({"png": os.path.basename(path), "lines": lines}, f, indent=1)
     os.replace(tmp, path)
+    os.replace(path + ".json.tmp", path + ".json")
 
 
 def plot_time_histories(out, meta):
-    runs = {t["model"]: read_csv(os.path.join(out, t["file"])) for t in meta.get("timehistories", [])}
+    runs = {t["model"]: (t["file"], read_csv(os.path.join(out, t["file"]))[1]) for t in meta.get("timehistories", [])}
     models = [m for m in ("fullcar", "halfcar", "reduced") if m in runs]
     fig, axes = plt.subplots(5, len(models), figsize=(5 * len(models), 13), sharex=True, squeeze=False)
     for j, m in enumerate(models):
-        r = runs[m]
-        t = column(r, "t_s")
+        f, r = runs[m]
+
+        def draw(ax, y, yscale=1.0, **style):
+            plot_csv(ax, f, r, {}, "t_s", y, yscale=yscale, **style)
+
         ax = axes[0][j]
-        ax.plot(t, column(r, "roll_deg"), label="roll [deg]")
-        ax.plot(t, column(r, "cross_level_F_in"), label="cross-level [in]", alpha=0.7)
+        draw(ax, "roll_deg", label="roll [deg]")
+        draw(ax, "cross_level_F_in", label="cross-level [in]", alpha=0.7)
         ax.set_title(f"{m}: 70-ton loaded, 0.75 in, 16.5 mph")
         ax.legend(loc="upper left", fontsize=8)
-        axes[1][j].plot(t, column(r, "car_body_vertical_in"))
+        draw(axes[1][j], "car_body_vertical_in")
         axes[1][j].set_ylabel("car body vertical [in]")
-        axes[2][j].plot(t, [v / 1000 for v in column(r, "side_bearing_F_L_lb")], label="left")
-        axes[2][j].plot(t, [v / 1000 for v in column(r, "side_bearing_F_R_lb")], label="right")
+        draw(axes[2][j], "side_bearing_F_L_lb", 1e-3, label="left")
+        draw(axes[2][j], "side_bearing_F_R_lb", 1e-3, label="right")
         axes[2][j].set_ylabel("side bearing [1000 lb]")
         axes[2][j].legend(fontsize=8)
-        axes[3][j].plot(t, column(r, "wheel_lift_F1_L_in"), label="left")
-        axes[3][j].plot(t, column(r, "wheel_lift_F1_R_in"), label="right")
+        draw(axes[3][j], "wheel_lift_F1_L_in", label="left")
+        draw(axes[3][j], "wheel_lift_F1_R_in", label="right")
         axes[3][j].set_ylabel("wheel lift [in]")
-        axes[4][j].plot(t, [v / 1000 for v in column(r, "wheels_F_L_lb")], label="left")
-        axes[4][j].plot(t, [v / 1000 for v in column(r, "wheels_F_R_lb")], label="right")
+        draw(axes[4][j], "wheels_F_L_lb", 1e-3, label="left")
+        draw(axes[4][j], "wheels_F_R_lb", 1e-3, label="right")
         axes[4][j].set_ylabel("wheel force, 2 wheels [1000 lb]")
         axes[4][j].set_xlabel("time [s]")
     for row in axes:
         for ax in row:
             ax.grid(alpha=0.3)
     save(fig, os.path.join(out, "timehistory.png"))
-
-
-def split(rows, direction):
-    return [r for r in rows if r["direction"] == direction and r["failed"] == "0"]
 
 
 def plot_sweeps(out, meta):
@@ -73,20 +119,17 @@ def plot_sweeps(out, meta):
         fig, ax = plt.subplots(figsize=(7, 4.5))
         figl, axl = plt.subplots(3, 1, figsize=(7, 9), sharex=True)
         for k, s in enumerate(sweeps):
-            rows = read_csv(os.path.join(out, s["file"]))
+            _, rows = read_csv(os.path.join(out, s["file"]))
             color = f"C{k}"
             for direction, marker in (("up", "^"), ("down", "v")):
-                d = split(rows, direction)
-                v = column(d, "speed_mph")
-                ax.plot(v, column(d, "steady_roll_amplitude_deg"), marker=marker, color=color,
-                        linestyle="-" if direction == "up" else "--",
-                        label=f"{s['model']} {direction} (steady amplitude)")
-                axl[0].plot(v, column(d, "max_wheel_lift_in"), marker=marker, color=color,
-                            linestyle="-" if direction == "up" else "--", label=f"{s['model']} {direction}")
-                axl[1].plot(v, [x / 1000 for x in column(d, "max_wheel_load_lb")], marker=marker, color=color,
-                            linestyle="-" if direction == "up" else "--")
-                axl[2].plot(v, [x / 1000 for x in column(d, "max_side_bearing_load_lb")], marker=marker, color=color,
-                            linestyle="-" if direction == "up" else "--")
+                where = {"direction": direction, "failed": "0"}
+                style = dict(marker=marker, color=color, linestyle="-" if direction == "up" else "--")
+                plot_csv(ax, s["file"], rows, where, "speed_mph", "steady_roll_amplitude_deg",
+                         label=f"{s['model']} {direction} (steady amplitude)", **style)
+                plot_csv(axl[0], s["file"], rows, where, "speed_mph", "max_wheel_lift_in",
+                         label=f"{s['model']} {direction}", **style)
+                plot_csv(axl[1], s["file"], rows, where, "speed_mph", "max_wheel_load_lb", yscale=1e-3, **style)
+                plot_csv(axl[2], s["file"], rows, where, "speed_mph", "max_side_bearing_load_lb", yscale=1e-3, **style)
             up, down = s.get("jump_up_mph"), s.get("jump_down_mph")
             if up is not None:
                 ax.axvline(up, color=color, alpha=0.5, linestyle=":")
@@ -112,31 +155,34 @@ def plot_sweeps(out, meta):
         save(figl, os.path.join(out, f"sweep_loads_{key}.png"))
 
 
+# The steady CSV's `stable` column: yes | no | not computed.
+STABILITY_STYLE = {"yes": ("-", "describing function, stable"),
+                   "no": ("--", "describing function, unstable"),
+                   "not computed": (":", "describing function (stability not computed)")}
+
+
 def plot_steady(out, meta):
     sweeps = {}
     for s in meta.get("sweeps", []):
         sweeps.setdefault(s["key"], []).append(s)
     for st in meta.get("steady", []):
-        rows = read_csv(os.path.join(out, st["file"]))
+        _, rows = read_csv(os.path.join(out, st["file"]))
         fig, ax = plt.subplots(figsize=(7, 4.5))
-        branches = {}
-        for r in rows:
-            branches.setdefault(int(r["branch"]), []).append(r)
-        stable_key = [k for k in rows[0].keys() if k.startswith("stable")][0] if rows else "stable"
         labelled = set()
-        for b, pts in sorted(branches.items()):
-            state = pts[0][stable_key]
-            style, label = {"1": ("-", "describing function, stable"), "0": ("--", "describing function, unstable")}.get(
-                state, (":", "describing function (stability not computed)"))
-            ax.plot(column(pts, "speed_mph"), column(pts, "roll_amplitude_deg"), color="k", linestyle=style,
-                    linewidth=1.5, label=None if label in labelled else label)
+        for b in sorted({r["branch"] for r in rows}, key=int):
+            states = {r["stable"] for r in rows if r["branch"] == b}
+            if len(states) != 1 or not states <= STABILITY_STYLE.keys():
+                raise ValueError(f"{st['file']}: branch {b} has stability {sorted(states)}")
+            style, label = STABILITY_STYLE[states.pop()]
+            plot_csv(ax, st["file"], rows, {"branch": b}, "speed_mph", "roll_amplitude_deg", color="k",
+                     linestyle=style, linewidth=1.5, label=None if label in labelled else label)
             labelled.add(label)
         for k, s in enumerate(sweeps.get(st["sweep_key"], [])):
-            srows = read_csv(os.path.join(out, s["file"]))
+            _, srows = read_csv(os.path.join(out, s["file"]))
             for direction, marker in (("up", "^"), ("down", "v")):
-                d = split(srows, direction)
-                ax.plot(column(d, "speed_mph"), column(d, "steady_roll_amplitude_deg"), marker=marker,
-                        linestyle="none", color=f"C{k}", label=f"{s['model']} sweep {direction}")
+                plot_csv(ax, s["file"], srows, {"direction": direction, "failed": "0"}, "speed_mph",
+                         "steady_roll_amplitude_deg", marker=marker, linestyle="none", color=f"C{k}",
+                         label=f"{s['model']} sweep {direction}")
         ax.set_title(f"70-ton loaded, {st['amplitude_in']:.2f} in: describing function over the sweeps (Figs 31, 34)")
         ax.set_xlabel("speed [mph]")
         ax.set_ylabel("roll amplitude [deg]")

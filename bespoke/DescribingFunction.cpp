@@ -15,6 +15,15 @@
 
 namespace rockroll {
 
+const char* toString(Stability s) {
+    switch (s) {
+        case Stability::Stable: return "yes";
+        case Stability::Unstable: return "no";
+        case Stability::NotComputed: return "not computed";
+    }
+    return "not computed";
+}
+
 namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kUnknownScale = 1e-3;  // unknowns in mm and mrad
@@ -458,7 +467,7 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
             p.floquetConverged = f.converged;
             // A sticking wedge contributes μ = 1 exactly; the finite-difference
             // monodromy puts a few percent of noise on it (1.00–1.05 seen).
-            p.stable = f.maxMultiplier < 1.1;
+            p.stability = f.maxMultiplier < 1.1 ? Stability::Stable : Stability::Unstable;
             p.stabilityEvidence = "floquet";
         } catch (const IntegrationFailure&) {
             p.floquetConverged = false;
@@ -470,10 +479,11 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
                 p.twinPersistence = calcTwinPersistence(p.harmonics, p.speedMph, 10);
                 // The describing function itself is ~10 % off near resonance (0.68° against
                 // the twin's 0.76° at 15.7 mph); a drift beyond 15 % in 10 periods is not staying.
-                p.stable = std::abs(p.twinPersistence - 1) < 0.15;
+                p.stability = std::abs(p.twinPersistence - 1) < 0.15 ? Stability::Stable : Stability::Unstable;
                 p.stabilityEvidence = "persistence";
             } catch (const IntegrationFailure&) {
                 p.stabilityEvidence = "none";
+                p.stability = Stability::NotComputed;
             }
         }
     };
@@ -502,16 +512,25 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
             probe[k] = members[members.size() / 2];
         }
         runParallel(probe.size(), [&](size_t k) { applyFloquet(points[probe[k]]); });
-        std::vector<bool> stable(stretches, true);
+        // Without evidence and without a decided stretch before it to flip from,
+        // a stretch stays not computed (it used to be assumed stable).
+        std::vector<Stability> stable(stretches, Stability::NotComputed);
+        auto flip = [](Stability x) {
+            return x == Stability::Stable     ? Stability::Unstable
+                   : x == Stability::Unstable ? Stability::Stable
+                                              : Stability::NotComputed;
+        };
         for (int k = 0; k < stretches; ++k) {
             const SteadyStatePoint& p = points[probe[k]];
-            stable[k] = p.stabilityEvidence != "none" ? p.stable : (k == 0 ? true : !stable[k - 1]);
+            stable[k] = p.stabilityEvidence != "none" ? p.stability
+                        : k == 0                     ? Stability::NotComputed
+                                                     : flip(stable[k - 1]);
         }
-        for (auto& p : points) p.stable = stable[p.foldsBefore];
+        for (auto& p : points) p.stability = stable[p.foldsBefore];
     }
     std::vector<SteadyStateBranch> branches;
     for (const auto& p : points) {
-        if (branches.empty() || branches.back().stable != p.stable) branches.push_back({p.stable, {}});
+        if (branches.empty() || branches.back().stability != p.stability) branches.push_back({p.stability, {}});
         branches.back().points.push_back(p);
     }
     return branches;

@@ -28,6 +28,13 @@
 
 namespace rockroll {
 
+/// A steady-state solution's stability. NotComputed when nothing decided it
+/// (`--stability none`, or no evidence from the time-domain twin): never read
+/// it as stable.
+enum class Stability { Stable, Unstable, NotComputed };
+/// "yes" | "no" | "not computed" (CSV cells and text tables).
+const char* toString(Stability s);
+
 struct SteadyStatePoint {
     double speedMph = 0;
     double rollAmplitudeDeg = 0;      ///< half peak-to-peak of car-body roll
@@ -40,12 +47,12 @@ struct SteadyStatePoint {
     double twinPersistence = 0;       ///< twin's roll amplitude after 10 periods / this point's (NaN if not run)
     std::string stabilityEvidence = "none";  ///< floquet | persistence | none (fold rule)
     int foldsBefore = 0;              ///< folds passed along the path before this point
-    bool stable = true;
+    Stability stability = Stability::NotComputed;
     Eigen::VectorXd harmonics;        ///< scaled unknowns (mm, mrad)
 };
 
 struct SteadyStateBranch {
-    bool stable = true;
+    Stability stability = Stability::NotComputed;
     std::vector<SteadyStatePoint> points;
 };
 
@@ -53,7 +60,10 @@ struct SteadyStateBranch {
 ///   FoldRule: the path is cut at its folds; each stretch is marked by Floquet on the twin
 ///             at its middle point (flipping from the stretch before where shooting fails);
 ///   Floquet:  every point by Floquet on the twin (slow: a shooting per point);
-///   None:     not decided (every point reported stable, multipliers NaN).
+///   None:     not decided (every point Stability::NotComputed, multipliers NaN).
+/// A point whose evidence fails (no twin orbit, twin integration fails) is
+/// NotComputed too, and so is a FoldRule stretch without evidence that has no
+/// decided stretch before it to flip from.
 enum class StabilityMethod { FoldRule, Floquet, None };
 
 struct TwinFloquet {

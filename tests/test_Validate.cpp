@@ -1,14 +1,28 @@
 // rockroll validate: the committed report names the commit it came from, and
-// the quick run regenerates a complete report.
+// the quick run regenerates a complete report whose every file reads back: each
+// CSV as an RFC 4180 table with its required columns by name, each JSON, and each
+// plot's sidecar (app/plots.py) against the CSV columns it says it drew.
+#include "tests/CsvReader.h"
+
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 namespace {
+namespace fs = std::filesystem;
+using rockroll::test::CsvTable;
+using rockroll::test::parseCsvTable;
+using rockroll::test::parseNumber;
+
 std::string readFile(const std::string& path) {
     std::ifstream in(path);
     std::stringstream s;
@@ -16,6 +30,264 @@ std::string readFile(const std::string& path) {
     return s.str();
 }
 const std::string kSource = std::string(ROCKROLL_SCENARIO_DIR) + "/..";
+
+const std::vector<std::string> kHistoryColumns{"t_s",           "roll_deg",           "cross_level_F_in",
+                                               "car_body_vertical_in", "side_bearing_F_L_lb", "side_bearing_F_R_lb",
+                                               "wheel_lift_F1_L_in",   "wheel_lift_F1_R_in",  "wheels_F_L_lb",
+                                               "wheels_F_R_lb"};
+const std::vector<std::string> kSweepNumbers{"speed_mph",         "max_roll_deg",      "steady_roll_amplitude_deg",
+                                             "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb",
+                                             "min_wheel_load_ratio",  "max_side_bearing_load_lb",
+                                             "max_center_plate_load_lb"};
+const std::vector<std::string> kSteadyNumbers{"branch",           "speed_mph",         "roll_amplitude_deg",
+                                              "wheel_lift_fraction", "max_wheel_load_lb", "max_side_bearing_load_lb",
+                                              "folds_before"};
+
+void expectColumns(const CsvTable& t, const std::vector<std::string>& names, std::vector<std::string>& errors,
+                   const std::string& file) {
+    for (const auto& n : names)
+        if (t.find(n) < 0) errors.push_back(file + ": no column " + n);
+}
+
+void expectValues(const CsvTable& t, const std::string& col, const std::set<std::string>& allowed,
+                  std::vector<std::string>& errors, const std::string& file) {
+    const int k = t.find(col);
+    if (k < 0) return;
+    for (size_t r = 0; r < t.rows.size(); ++r)
+        if (!allowed.count(t.rows[r][k]))
+            errors.push_back(file + " row " + std::to_string(r + 1) + ": " + col + " = \"" + t.rows[r][k] + "\"");
+}
+
+/// Reads back one CSV written by validate; returns what is wrong with it.
+std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
+    std::vector<std::string> errors;
+    const std::string name = path.filename().string();
+    CsvTable t;
+    try {
+        t = parseCsvTable(readFile(path.string()));
+    } catch (const std::exception& e) {
+        return {name + ": " + e.what()};
+    }
+    if (t.rows.empty()) errors.push_back(name + ": no rows");
+    std::vector<std::string> numeric;
+    if (name.rfind("timehistory_", 0) == 0) {
+        expectColumns(t, kHistoryColumns, errors, name);
+        numeric = t.columns;  // every channel is a number
+    } else if (name.rfind("sweep_", 0) == 0) {
+        expectColumns(t, {"direction", "start", "failed", "regime"}, errors, name);
+        expectColumns(t, kSweepNumbers, errors, name);
+        expectValues(t, "direction", {"up", "down"}, errors, name);
+        expectValues(t, "start", {"rest", "continued"}, errors, name);
+        expectValues(t, "failed", {"0", "1"}, errors, name);
+        // A failed speed has no summary: only its speed must be a number.
+        CsvTable ok = t, failed = t;
+        ok.rows.clear(), failed.rows.clear();
+        const int f = t.find("failed");
+        for (const auto& r : t.rows) (f >= 0 && r[f] == "1" ? failed : ok).rows.push_back(r);
+        for (const auto& c : kSweepNumbers) try {
+                (void)ok.numbers(c);
+            } catch (const std::exception& e) {
+                errors.push_back(name + ": " + e.what());
+            }
+        numeric = {"speed_mph"};
+        t = failed;
+    } else if (name.rfind("steady_", 0) == 0) {
+        expectColumns(t, {"stable"}, errors, name);
+        expectColumns(t, kSteadyNumbers, errors, name);
+        // The quick run traces without stability: every solution must say so, never "yes".
+        expectValues(t, "stable", quick ? std::set<std::string>{"not computed"}
+                                        : std::set<std::string>{"yes", "no", "not computed"},
+                     errors, name);
+        numeric = kSteadyNumbers;
+    } else {
+        errors.push_back(name + ": a CSV this test does not know; add its columns here");
+    }
+    for (const auto& c : numeric) try {
+            for (double v : t.numbers(c))
+                if (!std::isfinite(v)) errors.push_back(name + ": " + c + " holds " + std::to_string(v));
+        } catch (const std::exception& e) {
+            errors.push_back(name + ": " + e.what());
+        }
+    return errors;
+}
+
+/// Checks NAME.png.json (app/plots.py) against the CSV files it names: every
+/// line's x and y columns exist, the rows it selects are as many as it drew, and
+/// its sampled drawn values are those columns times the stated scale.
+std::vector<std::string> checkPlotSidecar(const fs::path& dir, const std::string& png) {
+    std::vector<std::string> errors;
+    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
+    nlohmann::json side;
+    try {
+        side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
+    } catch (const std::exception& e) {
+        return {png + ".json: " + e.what()};
+    }
+    if (!side["lines"].is_array() || side["lines"].empty()) return {png + ".json: no lines"};
+    std::map<std::string, CsvTable> tables;
+    for (const auto& l : side["lines"]) {
+        const std::string csv = l.at("csv").get<std::string>(), x = l.at("x").get<std::string>(),
+                          y = l.at("y").get<std::string>();
+        const std::string what = png + ": " + y + " against " + x + " from " + csv;
+        if (!tables.count(csv)) try {
+                tables[csv] = parseCsvTable(readFile((dir / csv).string()));
+            } catch (const std::exception& e) {
+                errors.push_back(what + ": " + e.what());
+                continue;
+            }
+        const CsvTable& t = tables[csv];
+        const int xi = t.find(x), yi = t.find(y);
+        if (xi < 0 || yi < 0) {
+            errors.push_back(what + ": no such column");
+            continue;
+        }
+        std::vector<const std::vector<std::string>*> rows;
+        for (const auto& r : t.rows) {
+            bool match = true;
+            for (const auto& [col, value] : l.at("where").items()) {
+                const int c = t.find(col);
+                match = match && c >= 0 && r[c] == value.get<std::string>();
+            }
+            if (match) rows.push_back(&r);
+        }
+        if (rows.size() != l.at("points").get<size_t>()) {
+            errors.push_back(what + ": drew " + l.at("points").dump() + " points, the CSV has " + std::to_string(rows.size()));
+            continue;
+        }
+        if (!rows.empty() && l.at("samples").empty()) errors.push_back(what + ": no samples");
+        const double xs = l.at("x_scale").get<double>(), ys = l.at("y_scale").get<double>();
+        for (const auto& smp : l.at("samples")) {
+            const size_t i = smp.at("index").get<size_t>();
+            if (i >= rows.size()) {
+                errors.push_back(what + ": sample index out of range");
+                continue;
+            }
+            const auto xv = parseNumber((*rows[i])[xi]), yv = parseNumber((*rows[i])[yi]);
+            const double dx = smp.at("x").get<double>(), dy = smp.at("y").get<double>();
+            auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
+            if (!xv || !yv || !near(dx, *xv * xs) || !near(dy, *yv * ys))
+                errors.push_back(what + ": point " + std::to_string(i) + " drawn at (" + std::to_string(dx) + ", " +
+                                 std::to_string(dy) + "), the CSV has (" + (*rows[i])[xi] + ", " + (*rows[i])[yi] + ")");
+        }
+    }
+    return errors;
+}
+
+/// What each plot of validate must draw: (CSV name prefix, x column, y column, y scale).
+struct Drawn {
+    std::string csvPrefix, x, y;
+    double yScale;
+    bool operator<(const Drawn& o) const { return std::tie(csvPrefix, x, y, yScale) < std::tie(o.csvPrefix, o.x, o.y, o.yScale); }
+};
+
+std::set<Drawn> expectedLines(const std::string& png) {
+    std::smatch m;
+    std::set<Drawn> e;
+    auto scale = [](const std::string& col) { return col.size() > 3 && col.substr(col.size() - 3) == "_lb" ? 1e-3 : 1.0; };
+    if (png == "timehistory.png") {
+        for (size_t k = 1; k < kHistoryColumns.size(); ++k)
+            e.insert({"timehistory_", "t_s", kHistoryColumns[k], scale(kHistoryColumns[k])});
+    } else if (std::regex_match(png, m, std::regex("sweep_loads_(.+)\\.png"))) {
+        for (const char* y : {"max_wheel_lift_in", "max_wheel_load_lb", "max_side_bearing_load_lb"})
+            e.insert({"sweep_" + m[1].str() + "_", "speed_mph", y, scale(y)});
+    } else if (std::regex_match(png, m, std::regex("sweep_(.+)\\.png"))) {
+        e.insert({"sweep_" + m[1].str() + "_", "speed_mph", "steady_roll_amplitude_deg", 1});
+    } else if (std::regex_match(png, m, std::regex("steady_(.+)\\.png"))) {
+        e.insert({"steady_" + m[1].str() + ".csv", "speed_mph", "roll_amplitude_deg", 1});
+        e.insert({"sweep_" + m[1].str() + "_", "speed_mph", "steady_roll_amplitude_deg", 1});
+    }
+    return e;
+}
+
+/// The sidecar draws exactly the expected (file, x, y, scale) lines.
+std::vector<std::string> checkPlotColumns(const fs::path& dir, const std::string& png) {
+    const std::set<Drawn> expected = expectedLines(png);
+    if (expected.empty()) return {png + ": a plot this test does not know; add what it must draw here"};
+    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
+    nlohmann::json side;
+    try {
+        side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
+    } catch (const std::exception& e) {
+        return {png + ".json: " + e.what()};
+    }
+    std::set<Drawn> drawn;
+    std::vector<std::string> errors;
+    for (const auto& l : side["lines"]) {
+        const std::string csv = l.at("csv").get<std::string>();
+        bool known = false;
+        for (const auto& d : expected)
+            if (csv.rfind(d.csvPrefix, 0) == 0 && d.x == l.at("x").get<std::string>() && d.y == l.at("y").get<std::string>()) {
+                known = true;
+                drawn.insert(d);
+                if (l.at("x_scale").get<double>() != 1.0 || l.at("y_scale").get<double>() != d.yScale)
+                    errors.push_back(png + ": " + d.y + " drawn with scale " + l.at("y_scale").dump());
+            }
+        if (!known)
+            errors.push_back(png + ": draws " + l.at("y").get<std::string>() + " against " + l.at("x").get<std::string>() +
+                             " from " + csv + ", which it should not");
+    }
+    for (const auto& d : expected)
+        if (!drawn.count(d)) errors.push_back(png + ": does not draw " + d.y + " against " + d.x + " from " + d.csvPrefix + "*");
+    return errors;
+}
+
+std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += x + "\n";
+    return s;
+}
+
+struct ReadBack {
+    int csvs = 0, jsons = 0, pngs = 0;
+};
+
+/// Every file validate wrote to `out` reads back (gtest failures for what does not).
+ReadBack checkValidateOutput(const fs::path& out, bool quick) {
+    // Every file reads back. JSON: parses; validation.json names only files that exist.
+    ReadBack n;
+    std::set<std::string> listed;
+    for (const auto& e : fs::directory_iterator(out)) {
+        const std::string name = e.path().filename().string();
+        if (e.path().extension() == ".json") {
+            ++n.jsons;
+            nlohmann::json j;
+            try {
+                j = nlohmann::json::parse(readFile(e.path().string()));
+            } catch (const std::exception& x) {
+                ADD_FAILURE() << name << ": " << x.what();
+                continue;
+            }
+            if (name != "validation.json") continue;
+            for (const char* key : {"timehistories", "sweeps", "steady"}) {
+                if (!(j.contains(key) && j[key].is_array() && !j[key].empty())) {
+                    ADD_FAILURE() << "validation.json: no " << key;
+                    continue;
+                }
+                for (const auto& item : j[key]) {
+                    const std::string file = item.at("file").get<std::string>();
+                    listed.insert(file);
+                    EXPECT_TRUE(fs::exists(out / file)) << "validation.json lists " << file;
+                }
+            }
+        } else if (e.path().extension() == ".csv") {
+            ++n.csvs;
+            EXPECT_EQ(join(checkValidateCsv(e.path(), quick)), "");
+        }
+    }
+    for (const auto& e : fs::directory_iterator(out))
+        if (e.path().extension() == ".csv")
+            EXPECT_TRUE(listed.count(e.path().filename().string())) << e.path().filename() << " is not in validation.json";
+    // Plots: each PNG's sidecar draws the expected columns, and its values are the CSV's.
+    for (const auto& e : fs::directory_iterator(out)) {
+        if (e.path().extension() != ".png") continue;
+        ++n.pngs;
+        const std::string png = e.path().filename().string();
+        EXPECT_EQ(join(checkPlotColumns(out, png)), "");
+        EXPECT_EQ(join(checkPlotSidecar(out, png)), "");
+    }
+    return n;
+}
+
 }  // namespace
 
 TEST(Validate, CommittedReportNamesAnExistingCommit) {
@@ -46,4 +318,65 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     // Nothing half-written is left behind.
     for (const auto& e : std::filesystem::directory_iterator(out))
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+
+    const ReadBack n = checkValidateOutput(out, true);
+    // Quick run: 4 time histories, 6 sweeps, 1 steady; a time-history plot, 2 per sweep case, 1 steady.
+    EXPECT_EQ(n.csvs, 11);
+    EXPECT_EQ(n.pngs, 14);
+    EXPECT_EQ(n.jsons, n.pngs + 1);
+}
+
+// The committed results/ read back as the quick run's do (results/ is regenerated
+// by `rockroll validate`; a file written by an older writer fails here).
+TEST(Validate, CommittedResultsReadBack) {
+    const fs::path results = fs::path(kSource) / "results";
+    const std::string report = readFile((results / "REPORT.md").string());
+    ASSERT_FALSE(report.empty()) << "results/REPORT.md is missing";
+    const bool quick = report.find("`rockroll validate --quick`") != std::string::npos;
+    const ReadBack n = checkValidateOutput(results, quick);
+    EXPECT_GT(n.csvs, 0);
+    EXPECT_GT(n.pngs, 0);
+    EXPECT_EQ(n.jsons, n.pngs + 1) << "every PNG has its sidecar, plus validation.json";
+}
+
+// The read-back checks can fail: a shifted header, a wrong column in a plot, or a
+// quick-run steady CSV that calls a solution stable.
+TEST(Validate, ReadBackChecksCatchWrongFiles) {
+    const fs::path dir = fs::path(ROCKROLL_BUILD_DIR) / "validate_readback_check";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; };
+    // The header that shifted every column on main.
+    write("steady_70ton-loaded_0.75in.csv",
+          "branch,stable (1 yes, 0 no, -1 not computed),speed_mph,roll_amplitude_deg,wheel_lift_fraction,"
+          "max_wheel_load_lb,max_side_bearing_load_lb,folds_before\n0,-1,12.0000,0.6100,0.0000,40000,1000,0\n");
+    EXPECT_NE(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", true)), "");
+    const std::string good =
+        "branch,stable,speed_mph,roll_amplitude_deg,wheel_lift_fraction,max_wheel_load_lb,max_side_bearing_load_lb,"
+        "folds_before\n0,yes,12.0000,0.6100,0.0000,40000,1000,0\n0,yes,12.5000,0.6500,0.0000,41000,1100,0\n";
+    write("steady_70ton-loaded_0.75in.csv", good);
+    EXPECT_NE(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", true)), "") << "quick run said stable";
+    EXPECT_EQ(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", false)), "");
+    write("other.csv", "a,b\n1,2\n");
+    EXPECT_NE(join(checkValidateCsv(dir / "other.csv", true)), "") << "unknown CSV";
+
+    auto sidecar = [&](const std::string& y, double ys, double drawnY) {
+        nlohmann::json where = nlohmann::json::object(), sample = nlohmann::json::object(), l = nlohmann::json::object();
+        where["branch"] = "0";
+        sample["index"] = 1, sample["x"] = 12.5, sample["y"] = drawnY;
+        l["csv"] = "steady_70ton-loaded_0.75in.csv", l["where"] = where, l["x"] = "speed_mph", l["y"] = y;
+        l["x_scale"] = 1.0, l["y_scale"] = ys, l["points"] = 2, l["samples"] = nlohmann::json::array({sample});
+        nlohmann::json doc = nlohmann::json::object();
+        doc["lines"] = nlohmann::json::array({l});
+        write("steady_70ton-loaded_0.75in.png.json", doc.dump());
+    };
+    sidecar("roll_amplitude_deg", 1.0, 0.65);
+    EXPECT_EQ(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
+    sidecar("roll_amplitude_deg", 1.0, 1100);  // drew another column's values under this name
+    EXPECT_NE(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
+    sidecar("max_side_bearing_load_lb", 1.0, 1100);  // honest sidecar, wrong column for this plot
+    EXPECT_EQ(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
+    const std::string wrong = join(checkPlotColumns(dir, "steady_70ton-loaded_0.75in.png"));
+    EXPECT_NE(wrong.find("draws max_side_bearing_load_lb against speed_mph from steady_70ton-loaded_0.75in.csv, which it "
+                         "should not"), std::string::npos) << wrong;
 }
