@@ -193,6 +193,24 @@ void readEom(const toml::table& root, const std::string& src, Scenario& sc) {
     eom.rejectUnknown();
 }
 
+void readReduced(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader reduced(getTable(root, "reduced", src, false), src, "reduced.");
+    sc.reduced.truckWeight = reduced.getBool("truck_weight", false);
+    reduced.rejectUnknown();
+}
+
+void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
+    sc.attribution.truckGravity = attribution.getBool("truck_gravity", true);
+    if (attribution.has("truck_mass_scale")) {
+        const double f = attribution.getQuantity("truck_mass_scale", units::Dimension::Dimensionless);
+        if (!(f >= 0.001 && f <= 1))
+            attribution.fail("truck_mass_scale", fmt::format("{}", f), "a plain number in [0.001, 1]");
+        sc.attribution.truckMassScale = f;
+    }
+    attribution.rejectUnknown();
+}
+
 }  // namespace
 
 Scenario parseScenario(std::string_view text, const std::string& source) {
@@ -211,8 +229,10 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
     readTrack(root, source, sc);
     readRun(root, source, sc);
     readEom(root, source, sc);
+    readReduced(root, source, sc);
+    readAttribution(root, source, sc);
     for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown({"eom"});
+    top.rejectUnknown({"eom", "reduced", "attribution"});
     return sc;
 }
 

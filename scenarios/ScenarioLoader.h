@@ -4,6 +4,7 @@
 // unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
 // the key, the value and what was expected.
 #include "bespoke/EomHalfCarModel.h"
+#include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/Simulation.h"
@@ -25,6 +26,8 @@ struct Scenario {
     EomSimplifications eom;      ///< [eom] table: the report's §4.1 simplifications
     RunSettings run;
     double filterCutoffHz = 20;
+    ReducedOptions reduced;            ///< [reduced] table: the reduced model's truck weight
+    AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
 };
 
 class ScenarioError : public std::runtime_error {
