@@ -193,15 +193,22 @@ void readEom(const toml::table& root, const std::string& src, Scenario& sc) {
     eom.rejectUnknown();
 }
 
+/// A TOML boolean only (toml++ would read 0 or 1 as a bool).
+bool getStrictBool(TableReader& table, const std::string& key, bool fallback) {
+    if (table.has(key) && !table.require(key)->is_boolean())
+        table.fail(key, TableReader::describe(*table.require(key)), "true or false");
+    return table.getBool(key, fallback);
+}
+
 void readReduced(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader reduced(getTable(root, "reduced", src, false), src, "reduced.");
-    sc.reduced.truckWeight = reduced.getBool("truck_weight", false);
+    sc.reduced.truckWeight = getStrictBool(reduced, "truck_weight", false);
     reduced.rejectUnknown();
 }
 
 void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
-    sc.attribution.truckGravity = attribution.getBool("truck_gravity", true);
+    sc.attribution.truckGravity = getStrictBool(attribution, "truck_gravity", true);
     if (attribution.has("truck_mass_scale")) {
         const double f = attribution.getQuantity("truck_mass_scale", units::Dimension::Dimensionless);
         if (!(f >= 0.001 && f <= 1))
