@@ -200,8 +200,9 @@ std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_j
                       "its model's maximum wheel lift and the share of that gap it closes (largest first):\n\n",
                       H0->staticWheelLoadLb - R0->staticWheelLoadLb, V, R0->maxWheelLiftIn, H0->maxWheelLiftIn, gap);
     struct Effect {
-        std::string label, group;
+        std::string label, group, regime;
         double from, to, share, rollFrom, rollTo;
+        bool comparable;  ///< same regime as its model's baseline: the same kind of rocking
     };
     std::vector<Effect> effects;
     for (const auto& f : factors) {
@@ -212,30 +213,55 @@ std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_j
         // Toward the other model: the reduced model's lift falling, the half car's rising.
         const double share = (f.model == "reduced" ? base->maxWheelLiftIn - x->maxWheelLiftIn
                                                    : x->maxWheelLiftIn - base->maxWheelLiftIn) / gap;
-        effects.push_back({f.label, f.group, base->maxWheelLiftIn, x->maxWheelLiftIn, share, base->maxRollDeg, x->maxRollDeg});
+        effects.push_back({f.label, f.group, x->regime, base->maxWheelLiftIn, x->maxWheelLiftIn, share,
+                           base->maxRollDeg, x->maxRollDeg, x->regime == base->regime});
     }
-    std::sort(effects.begin(), effects.end(), [](const Effect& a, const Effect& b) { return std::abs(a.share) > std::abs(b.share); });
+    std::stable_sort(effects.begin(), effects.end(), [](const Effect& a, const Effect& b) {
+        return a.comparable != b.comparable ? a.comparable : std::abs(a.share) > std::abs(b.share);
+    });
     // Shares of a gap that is not there mean nothing: then only the changes are listed.
     const bool shares = gap > 0.1;
-    for (const auto& e : effects)
-        md += fmt::format("- {}: wheel lift {:.2f} → {:.2f} in{}; max roll {:.2f} → {:.2f}°\n", e.label, e.from, e.to,
-                          shares ? fmt::format(" ({:+.0f} % of the gap)", 100 * e.share) : "", e.rollFrom, e.rollTo);
-    double weightShare = 0, otherShare = 0;
-    std::string weightLabel;
     for (const auto& e : effects) {
-        if (e.group == "truck weight" && std::abs(e.share) > std::abs(weightShare)) weightShare = e.share, weightLabel = e.label;
-        if (e.group != "truck weight" && std::abs(e.share) > std::abs(otherShare)) otherShare = e.share;
+        md += fmt::format("- {}: wheel lift {:.2f} → {:.2f} in", e.label, e.from, e.to);
+        if (shares && e.comparable) md += fmt::format(" ({:+.0f} % of the gap)", 100 * e.share);
+        md += fmt::format("; max roll {:.2f} → {:.2f}°", e.rollFrom, e.rollTo);
+        if (!e.comparable)
+            md += fmt::format(" — regime {} instead of its baseline's: not the same rocking, so no share is given", e.regime);
+        md += "\n";
     }
-    if (!effects.empty() && shares)
-        md += fmt::format("\nThe largest single factor is {} ({:+.0f} % of the gap). The truck's weight, switched in "
-                          "either model, closes up to {:+.0f} % of it; every other factor measured here (truck mass, "
-                          "contact stiffness, friction bristle) at most {:+.0f} %.",
-                          effects.front().label, 100 * effects.front().share, 100 * weightShare, 100 * otherShare);
-    if (const RunSummary* x = at("halfcar_truck_mass_0.01", V))
-        md += fmt::format(" Making the wheelsets' (with side frames) mass and inertia 1 % with their weight kept "
-                          "(the bolster unchanged) gives the half car {:.2f} in of lift, against {:.2f} in for "
-                          "removing their weight with the mass kept.",
-                          x->maxWheelLiftIn, at("halfcar_truck_gravity_off", V) ? at("halfcar_truck_gravity_off", V)->maxWheelLiftIn : NAN);
+    const Effect* top = nullptr;
+    const Effect* weight = nullptr;
+    const Effect* other = nullptr;
+    for (const auto& e : effects) {
+        if (!e.comparable) continue;
+        if (!top || std::abs(e.share) > std::abs(top->share)) top = &e;
+        if (e.group == "truck weight" && (!weight || std::abs(e.share) > std::abs(weight->share))) weight = &e;
+        if (e.group != "truck weight" && (!other || std::abs(e.share) > std::abs(other->share))) other = &e;
+    }
+    if (shares && top) {
+        md += fmt::format("\nAmong the factors that keep their model's regime, the largest is {} ({:+.0f} % of the gap).",
+                          top->label, 100 * top->share);
+        std::vector<std::string> weights;
+        for (const auto& e : effects)
+            if (e.comparable && e.group == "truck weight") weights.push_back(fmt::format("{:+.0f} % ({})", 100 * e.share, e.label));
+        if (weight && other)
+            md += fmt::format(" The truck's weight alone closes {} of the gap; the largest of the other factors "
+                              "(truck mass, contact stiffness, friction bristle) {:+.0f} % ({}).",
+                              fmt::join(weights, " and "), 100 * other->share, other->label);
+    }
+    const RunSummary* R1 = at("reduced_truck_weight", V);
+    const RunSummary* H1 = at("halfcar_truck_gravity_off", V);
+    const RunSummary* H2 = at("halfcar_truck_mass_0.01", V);
+    if (H1 && H2)
+        md += fmt::format(" Making the half car's wheelsets (with side frames) 1 % of their mass and inertia with their "
+                          "weight kept (the bolster unchanged) gives {:.2f} in of lift, against {:.2f} in for removing "
+                          "their weight with the mass kept.",
+                          H2->maxWheelLiftIn, H1->maxWheelLiftIn);
+    if (R1 && H2)
+        md += fmt::format(" With the truck's weight in both models and its inertia (nearly) out of both — reduced "
+                          "with `truck_weight = true`, half car with `truck_mass_scale = 0.01` — the lifts are "
+                          "{:.2f} and {:.2f} in, max roll {:.2f}° and {:.2f}°.",
+                          R1->maxWheelLiftIn, H2->maxWheelLiftIn, R1->maxRollDeg, H2->maxRollDeg);
     if (const RunSummary* F0 = at("fullcar", V)) {
         md += fmt::format(" Full car at {:g} mph: wheel lift {:.2f} in", V, F0->maxWheelLiftIn);
         if (const RunSummary* x = at("fullcar_truck_gravity_off", V)) md += fmt::format(", {:.2f} in with `truck_gravity = false`", x->maxWheelLiftIn);
@@ -243,24 +269,29 @@ std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_j
         md += ".";
     }
     if (!s.quick) {
+        auto shortLabel = [](std::string l) {
+            l = l.substr(l.find(':') + 2);
+            if (const auto p = l.find(" ("); p != std::string::npos) l = l.substr(0, p);
+            return l;
+        };
         auto jumpsOf = [&](const std::string& group, const std::string& model) {
             std::vector<std::string> out;
             for (size_t f = 0; f < factors.size(); ++f)
                 if (factors[f].group == group && factors[f].model == model && res[f].speeds.size() > 2)
                     out.push_back(fmt::format("{} mph ({})", std::isfinite(res[f].jumpRest) ? fmt::format("{:.1f}", res[f].jumpRest) : "none",
-                                              factors[f].label.substr(factors[f].label.find(':') + 2)));
+                                              shortLabel(factors[f].label)));
             return fmt::format("{}", fmt::join(out, ", "));
         };
         const FactorResult& rh = res[index["halfcar"]];
         const FactorResult& rr = res[index["reduced"]];
         md += fmt::format("\n\nJump speeds. From rest, the half car jumps up at {:.1f} mph and the reduced model at "
-                          "{:.1f} mph. Contact stiffness alone puts the half car's at {}; the friction bristle at {} "
-                          "(reduced: {}); the truck's weight at {} (reduced: {}); its mass at {}. On the sweep branch "
-                          "(state carried, same speeds) the half car jumps at {:.1f} mph and the reduced model at "
-                          "{:.1f} mph. The jump speed is resolved to the {:g} mph step.",
+                          "{:.1f} mph. One factor at a time, the half car's: contact stiffness {}; friction {}; truck "
+                          "weight {}; truck mass {}. The reduced model's: friction {}; truck weight {}. On the sweep "
+                          "branch (state carried, same speeds) the half car jumps at {:.1f} mph and the reduced model "
+                          "at {:.1f} mph. Jump speeds are resolved to the {:g} mph step.",
                           rh.jumpRest, rr.jumpRest, jumpsOf("contact stiffness", "halfcar"), jumpsOf("friction", "halfcar"),
-                          jumpsOf("friction", "reduced"), jumpsOf("truck weight", "halfcar"),
-                          jumpsOf("truck weight", "reduced"), jumpsOf("truck mass", "halfcar"), rh.jumpCarried,
+                          jumpsOf("truck weight", "halfcar"), jumpsOf("truck mass", "halfcar"),
+                          jumpsOf("friction", "reduced"), jumpsOf("truck weight", "reduced"), rh.jumpCarried,
                           rr.jumpCarried, grid[1] - grid[0]);
     }
     md += fmt::format("\n\nSection wall time: {:.1f} min on {} thread(s).\n\n", wallMin, s.jobs);
