@@ -163,3 +163,39 @@ TEST(Attribution, SimbodyTruckMassScaleKeepsTheStaticLoads) {
     EXPECT_NEAR(r.maxWheelLoadLb, r.staticWheelLoadLb, 1e-4 * r.staticWheelLoadLb);
     EXPECT_LT(r.maxRollDeg, 1e-9);
 }
+
+// With truck_weight, every mode's solution carries the weights in the vertical
+// balances (summed directly), and the moment balances are those of the massless truck.
+TEST(Attribution, ReducedTruckWeightEntersEveryModesVerticalBalance) {
+    const CarParameters car = makeCarParameters("70ton-loaded");
+    const ReducedHalfCarModel m(car, [](double) { return RailState{}; }, ReducedOptions{true});
+    const TruckGeometry& g = m.getTruckGeometry();
+    EXPECT_DOUBLE_EQ(g.bolsterWeight, car.bolsterWeight);
+    EXPECT_DOUBLE_EQ(g.wheelsetWeight, 2 * (car.wheelsetWeight + car.sideFrameWeight));
+    auto y = m.makeStaticState();
+    y[0] = 0.03, y[1] = 0.004, y[2] -= 0.01;
+    auto mem = m.makeStaticMemory();
+    TruckInputs in = m.makeTruckInputs(0.1, y, mem);
+    in.railZ = {0.004, -0.003};
+    const double side[2] = {+1, -1};
+    int solved = 0;
+    for (const TruckMode& mode : enumerateTruckModes()) {
+        const TruckSolution s = solveTruckMode(g, in, mode);
+        if (s.violation >= 1e300) continue;
+        ++solved;
+        double Fz = -g.bolsterWeight, Wz = s.wheel[0] + s.wheel[1] - g.wheelsetWeight;
+        double M = g.cpAboveSprings * s.pinForce, WM = g.halfGauge * (s.wheel[0] - s.wheel[1]) + g.springTopAboveRail * s.pinForce;
+        for (int i : {0, 1}) {
+            const double load = s.spring[i] + s.friction[i];
+            Fz += -s.rim[i] - s.sideBearing[i] + load;
+            Wz -= load;
+            M += side[i] * (-g.a_c * s.rim[i] - g.a_s * s.sideBearing[i] + g.l_s * load);
+            WM -= side[i] * g.l_s * load;
+        }
+        ASSERT_NEAR(Fz, 0.0, 0.1) << mode.describe();
+        ASSERT_NEAR(Wz, 0.0, 0.1) << mode.describe();
+        ASSERT_NEAR(M, 0.0, 0.1) << mode.describe();
+        ASSERT_NEAR(WM, 0.0, 0.1) << mode.describe();
+    }
+    EXPECT_GT(solved, 10000);
+}
