@@ -63,8 +63,6 @@ ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOpt
 }
 }  // namespace
 
-namespace {
-/// A switch for one formulation set on a run of another would be silently ignored.
 void checkSwitchesApply(const Scenario& sc) {
     const bool simbody = sc.model == "halfcar" || sc.model == "fullcar";
     if (sc.reduced.truckWeight && sc.model != "reduced")
@@ -78,7 +76,6 @@ void checkSwitchesApply(const Scenario& sc) {
         throw ScenarioError(fmt::format("{}: key 'attribution.truck_mass_scale' = {}: expected model halfcar or "
                                         "fullcar, not \"{}\"", sc.source, sc.attribution.truckMassScale, sc.model));
 }
-}  // namespace
 
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     checkSwitchesApply(sc);

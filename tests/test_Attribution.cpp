@@ -4,6 +4,7 @@
 #include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/RockingModel.h"
 #include "scenarios/ScenarioRun.h"
+#include "scenarios/SpeedSweep.h"
 #include "TestCases.h"
 
 #include <gtest/gtest.h>
@@ -97,6 +98,11 @@ TEST(Attribution, SwitchOnAModelItDoesNotApplyToIsAScenarioError) {
         a.model = m;
         EXPECT_THROW(runScenario(a), ScenarioError) << m;
     }
+    // A threaded sweep reports it before its threads start (not std::terminate).
+    SweepSpec spec;
+    spec.scenario = a;
+    spec.fromMph = 15, spec.toMph = 16, spec.stepMph = 1;
+    EXPECT_THROW(runSweeps({spec, spec}, 2), ScenarioError);
 }
 
 TEST(Attribution, ReducedTruckWeightGivesTheSimbodyHalfCarsStaticWheelLoad) {
