@@ -2,6 +2,7 @@
 // CSV data and matplotlib plots. Every table and plot names the command that made it.
 #include "app/Commands.h"
 #include "app/Output.h"
+#include "app/ValidateSections.h"
 #include "bespoke/DescribingFunction.h"
 #include "mbmodel/CsvWriter.h"
 #include "mbmodel/ModalAnalysis.h"
@@ -130,12 +131,10 @@ std::string makeTimeHistories(const Settings& s, nlohmann::ordered_json& meta) {
     meta["defaultRuns"] = nlohmann::ordered_json::array();
     for (const auto& r : runs) meta["defaultRuns"].push_back(toJson(r.summary));
     md += "\n![time histories](timehistory.png)\n\n"
-          "Every model reaches severe rocking (center plate unloaded, wheel lift) on this case. The reduced model, "
-          "which is the report's own method, lands closest to the report's §3.1 numbers: its truck is massless and "
-          "its contacts rigid, so a lifted wheel is thrown high (about 2.5 in). The Simbody models and their "
-          "hand-written twin (eom, within 0.2 % of the Simbody half car) carry real truck masses on compliant "
-          "contacts: the same rocking lifts the wheel only 0.2–0.3 in, and the impacts when it drops back raise the "
-          "filtered side-bearing and wheel forces above the report's.\n\n";
+          "The reduced model, which is the report's own method, lands closest to the report's §3.1 wheel lift; the "
+          "Simbody models and their hand-written twin (eom, within 0.2 % of the Simbody half car) lift a wheel far "
+          "less and carry higher filtered side-bearing and wheel forces. Section 10 measures where the wheel-lift "
+          "difference comes from, one factor at a time.\n\n";
     return md;
 }
 
@@ -438,12 +437,11 @@ std::string makeTables34(const Settings& s, const std::vector<SweepResult>& swee
     }
     md += "The describing-function column is its largest solution at that speed (stable only, in the full run), "
           "for the 70-ton loaded car it was traced for (section 5); its roll is an amplitude (half peak-to-peak).\n\n";
-    md += "Why the large differences: (1) wheel lift — the report's reduced model has rigid contacts and a massless "
-          "truck, so once the center plate unloads nothing holds the wheelset down and it is thrown up by inches; in "
-          "the Simbody models and the eom twin the wheelset has mass and rides on stiff compliant rails, and the same "
-          "rocking lifts it by tenths of an inch. Our rebuilt reduced model shows the report's inches. (2) Forces — "
-          "the report quotes peaks of its own reduced model; ours are 20 Hz filtered maxima, and the impact peaks of "
-          "a compliant model depend on contact stiffness (section 6). (3) Roll at a given speed depends on the branch: "
+    md += "Why the large differences: (1) wheel lift — the reduced model (ours and the report's) lifts a wheel by "
+          "inches, the Simbody models and the eom twin by tenths of an inch; section 10 attributes the difference by "
+          "changing one factor at a time. (2) Forces — "
+          "the report quotes peaks of its own reduced model; ours are 20 Hz filtered maxima, and how much they move "
+          "with the assumed contact stiffness is measured in section 7. (3) Roll at a given speed depends on the branch: "
           "a run from rest and a sweep from above can sit on different branches (section 2), and the report's jump "
           "speed differs a little from ours. No parameter was tuned to any of these numbers.\n\n";
 
@@ -542,7 +540,7 @@ std::string makeDescribingFunction(const Settings& s, const SteadyByAmplitude& s
 }
 
 // =============================================================================
-// F, G, H. Modes, contact-stiffness convergence, added degrees of freedom
+// F, H. Modes, added degrees of freedom (G, convergence: ValidateConvergence.cpp)
 // =============================================================================
 
 std::string makeModes() {
@@ -569,42 +567,6 @@ std::string makeModes() {
         }
     }
     return md + "\n";
-}
-
-std::string makeStiffness(const Settings& s, nlohmann::ordered_json& meta) {
-    const std::vector<double> scales{0.5, 1, 2, 4};
-    std::vector<RunSummary> r(scales.size());
-    std::vector<std::function<void()>> jobs;
-    for (size_t i = 0; i < scales.size(); ++i)
-        jobs.push_back([&, i] {
-            Scenario sc = getDefaultScenario();
-            sc.model = "halfcar";
-            sc.car.contactStiffnessScale = scales[i];
-            sc.run.outputRate = 100;
-            r[i] = runScenario(sc).summary;
-        });
-    runParallel(jobs, s.jobs);
-    std::string md = "## 7. Contact-stiffness convergence (severe case: 70-ton loaded, 0.75 in, 16.5 mph, half car, 20 s)\n\n"
-                     "Made by `rockroll run scenarios/70ton-loaded.toml --model halfcar` with `contact_stiffness_scale` "
-                     "= 0.5, 1, 2, 4 in `[car]` (every contact stiffness: rim, side bearing, wheel–rail, center pin).\n\n"
-                     "| scale | max roll, deg | side bearing, lb | wheel load, lb | center plate, lb | raw side bearing, lb | wheel lift, in |\n|---|---|---|---|---|---|---|\n";
-    for (size_t i = 0; i < scales.size(); ++i) {
-        md += fmt::format("| ×{:g} | {:.2f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.3f} |\n", scales[i], r[i].maxRollDeg,
-                          r[i].maxSideBearingLoadLb, r[i].maxWheelLoadLb, r[i].maxCenterPlateLoadLb,
-                          r[i].rawMaxSideBearingLoadLb, r[i].maxWheelLiftIn);
-        meta["stiffness"].push_back({{"scale", scales[i]}, {"summary", toJson(r[i])}});
-    }
-    auto change = [&](double a, double b) { return fmt::format("{:+.1f} %", 100 * (b - a) / a); };
-    md += fmt::format("\nFrom ×1 to ×4 (every contact four times stiffer): max roll {}, filtered side-bearing force {}, "
-                      "filtered wheel load {}, center-plate load {}; from ×2 to ×4: roll {}, side bearing {}, wheel load {}. ",
-                      change(r[1].maxRollDeg, r[3].maxRollDeg), change(r[1].maxSideBearingLoadLb, r[3].maxSideBearingLoadLb),
-                      change(r[1].maxWheelLoadLb, r[3].maxWheelLoadLb), change(r[1].maxCenterPlateLoadLb, r[3].maxCenterPlateLoadLb),
-                      change(r[2].maxRollDeg, r[3].maxRollDeg), change(r[2].maxSideBearingLoadLb, r[3].maxSideBearingLoadLb),
-                      change(r[2].maxWheelLoadLb, r[3].maxWheelLoadLb));
-    md += "The roll is converged; the impact-driven force maxima still drift by several percent per doubling, so the "
-          "forces quoted in sections 1–4 carry that much uncertainty from the assumed contact stiffnesses "
-          "(docs/model.md lists them).\n\n";
-    return md;
 }
 
 std::string makeAddedDof(const Settings& s) {
@@ -712,11 +674,13 @@ int validateCommand(const ValidateOptions& o) {
     md += makeDescribingFunction(s, steady, meta);
     step("modes");
     md += makeModes();
-    step("contact stiffness");
-    md += makeStiffness(s, meta);
+    step("convergence");
+    md += makeConvergenceSection({s.quick, s.jobs}, meta);
     step("added degrees of freedom");
     md += makeAddedDof(s);
     md += makeCriteria(s, sweeps);
+    step("attribution");
+    md += makeAttributionSection({s.quick, s.jobs}, meta);
 
     writeAtomically(s.out / "validation.json", [&](std::ostream& out) { out << meta.dump(1) << "\n"; });
     step("plots");

@@ -15,8 +15,12 @@ constexpr double kSide[2] = {+1.0, -1.0};
 constexpr const char* kSideName[2] = {"L", "R"};
 }  // namespace
 
-ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails)
+ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options)
     : car_(car), rails_(std::move(rails)), truck_(car) {
+    if (options.truckWeight) {
+        truck_.bolsterWeight = car.bolsterWeight;
+        truck_.wheelsetWeight = 2 * (car.wheelsetWeight + car.sideFrameWeight);
+    }
     mass_ = car.getCarBodyWeight() / 2 / units::g;
     inertia_ = car.rollInertia / 2;
     staticZ_ = makeStaticState()[2];
@@ -24,7 +28,8 @@ ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunc
 }
 
 ReducedHalfCarModel::State ReducedHalfCarModel::makeStaticState() const {
-    const double Z = calcVerticalSpringCompression(mass_ * units::g / 2, {truck_.Kv, truck_.travel, truck_.Kb});
+    const double Z = calcVerticalSpringCompression((mass_ * units::g + truck_.bolsterWeight) / 2,
+                                                 {truck_.Kv, truck_.travel, truck_.Kb});
     State y = State::Zero();
     y[2] = truck_.springTopAboveRail - Z + truck_.cpAboveSprings + car_.cgAboveCenterPlate;
     return y;
@@ -32,7 +37,8 @@ ReducedHalfCarModel::State ReducedHalfCarModel::makeStaticState() const {
 
 ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeStaticMemory() const {
     TruckMemory m;
-    const double Z = calcVerticalSpringCompression(mass_ * units::g / 2, {truck_.Kv, truck_.travel, truck_.Kb});
+    const double Z = calcVerticalSpringCompression((mass_ * units::g + truck_.bolsterWeight) / 2,
+                                                 {truck_.Kv, truck_.travel, truck_.Kb});
     m.compression = {Z, Z};
     m.wedgeAnchor = {Z, Z};
     return m;

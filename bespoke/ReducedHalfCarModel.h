@@ -23,6 +23,16 @@
 
 namespace rockroll {
 
+/// Scenario table [reduced].
+struct ReducedOptions {
+    /// false (the report's §2.2): the truck is massless and weightless, so a wheel
+    /// carries only the car body's share (42 583 lb, 70-ton loaded). true: the
+    /// truck's equilibrium also carries the bolster's and the equivalent
+    /// wheelset's weights (2 wheelsets, 2 side frames), still without inertia, so
+    /// the static wheel load equals the Simbody half car's (docs/bespoke.md).
+    bool truckWeight = false;
+};
+
 class ReducedHalfCarModel {
 public:
     using State = Eigen::Matrix<double, 6, 1>;  ///< [θ, y, z, θ̇, ẏ, ż] of the car body
@@ -43,7 +53,7 @@ public:
         TruckSolution truck;
     };
 
-    ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails);
+    ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options = {});
 
     State makeStaticState() const;
     TruckMemory makeStaticMemory() const;

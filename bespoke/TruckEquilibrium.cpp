@@ -156,7 +156,7 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     e = Linear{};
     e.row[FCL] = e.row[FCR] = e.row[FSL] = e.row[FSR] = -1;
     e.row += load[0].row + load[1].row;
-    e.c = load[0].c + load[1].c;
+    e.c = load[0].c + load[1].c - g.bolsterWeight;
     set(0, e, 0);
     e = Linear{};
     e.row[FCL] = -g.a_c, e.row[FCR] = g.a_c, e.row[FSL] = -g.a_s, e.row[FSR] = g.a_s;
@@ -167,7 +167,7 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     e = Linear{};
     e.row[WL] = e.row[WR] = 1;
     e.row -= load[0].row + load[1].row;
-    e.c = -(load[0].c + load[1].c);
+    e.c = -(load[0].c + load[1].c) - g.wheelsetWeight;
     set(2, e, 0);
     e = Linear{};
     e.row[WL] = g.halfGauge, e.row[WR] = -g.halfGauge;

@@ -8,9 +8,9 @@
 // W_L, W_R; wedge friction forces on the bolster Φ_L, Φ_R; the lateral wedges'
 // force Φ_H and the center-pin force F_h. Fifteen equations:
 //
-//   bolster   Σ F_z:  −(F_cL + F_cR + F_sL + F_sR) + (P_L + Φ_L) + (P_R + Φ_R) = 0
+//   bolster   Σ F_z:  −(F_cL + F_cR + F_sL + F_sR) + (P_L + Φ_L) + (P_R + Φ_R) − W_B = 0
 //   bolster   Σ M:    −a_c (F_cL − F_cR) − a_s (F_sL − F_sR) + l_s ((P_L + Φ_L) − (P_R + Φ_R)) + h_cp·F_h = 0
-//   wheelset  Σ F_z:  W_L + W_R − (P_L + Φ_L) − (P_R + Φ_R) = 0
+//   wheelset  Σ F_z:  W_L + W_R − (P_L + Φ_L) − (P_R + Φ_R) − W_W = 0
 //   wheelset  Σ M:    (g/2)(W_L − W_R) − l_s ((P_L + Φ_L) − (P_R + Φ_R)) + h_st·F_h = 0
 //   each rim / side bearing:   closed → gap = 0,        open → force = 0
 //   each wheel:                on rail → tread z = rail z, lifted → W = 0
@@ -20,7 +20,10 @@
 //   lateral wedges:   stick → Φ_H = 2 k_bH (Y − Y_a),  slip → Φ_H = ±2 F_H
 //
 // (f₂: K_h·Y, plus K_gib·(|Y| − c_gib)·sign Y in gib contact; the wheelset is
-// held laterally at rail height by the wheel(s) in contact.)
+// held laterally at rail height by the wheel(s) in contact. W_B, W_W: the
+// bolster's and the equivalent wheelset's weights, 0 in the report's massless
+// truck; `[reduced] truck_weight = true` sets them (TruckGeometry). Each acts
+// through its body's reference point, so with nominal arms it adds no moment.)
 //
 // with P_i the spring force of the assumed segment (free: 0, linear: K_v Z,
 // bottomed: K_v·travel + K_b (Z − travel)), Z_i = z_seat,i − z_bolster end,i the
@@ -103,6 +106,9 @@ struct TruckGeometry {
     double Kv = 0, travel = 0, Kb = 0, Fv = 0;
     double kBristle = 0;   ///< wedge bristle stiffness F_V / friction_bristle_deflection
     double Kh = 0, gibClearance = 0, Kgib = 0, Fh = 0, kBristleLateral = 0, kPin = 0;
+    /// Weights carried by the truck (no inertia): 0 in the report's formulation.
+    double bolsterWeight = 0;   ///< W_B [N]
+    double wheelsetWeight = 0;  ///< W_W, the equivalent wheelset: 2 wheelsets and 2 side frames [N]
     explicit TruckGeometry(const CarParameters& car);
 };
 

@@ -15,13 +15,24 @@ namespace rockroll {
 
 RockingModel::RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options)
     : car_(car), track_(track), options_(options), matter_(system_), forces_(system_) {
-    Force::UniformGravity(forces_, matter_, Vec3(0, 0, -units::g));
+    // Attribution runs get a gravity that can exclude bodies, once the trucks exist (addTrucks).
+    if (options_.attribution.isDefault()) Force::UniformGravity(forces_, matter_, Vec3(0, 0, -units::g));
 }
 
 void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec3>& p_CarBodyPlates) {
-    for (size_t i = 0; i < specs.size(); ++i)
+    const AttributionSwitches& a = options_.attribution;
+    for (size_t i = 0; i < specs.size(); ++i) {
+        specs[i].wheelsetGravity = a.truckGravity;
+        specs[i].wheelsetMassScale = a.truckMassScale;
         trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBody_, p_CarBodyPlates[i], car_,
                                                   std::move(specs[i])));
+    }
+    if (!a.isDefault()) {
+        Force::Gravity gravity(forces_, matter_, -SimTK::ZAxis, units::g);
+        for (const auto& truck : trucks_)
+            for (int w = 0; w < truck->getNumWheelsets() && !a.truckGravity; ++w)
+                gravity.setDefaultBodyIsExcluded(truck->getWheelset(w).getMobilizedBodyIndex(), true);
+    }
     system_.realizeTopology();
     State s = makeStaticState(false);
     staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];

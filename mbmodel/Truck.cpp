@@ -43,7 +43,9 @@ void Truck::addBodies(SimbodyMatterSubsystem& matter) {
         const double n = ws.lumpedWheelsets;
         const double m = n * (car_.wheelsetWeight + car_.sideFrameWeight) / units::g;
         const double I = n * car_.wheelsetRollInertia;
-        wheelsets_.push_back(makeCrossSectionBody(ground, ws.x, Body::Rigid(MassProperties(m, Vec3(0), Inertia(I)))));
+        const double f = spec_.wheelsetMassScale;
+        wheelsets_.push_back(
+            makeCrossSectionBody(ground, ws.x, Body::Rigid(MassProperties(f * m, Vec3(0), Inertia(f * I)))));
     }
 }
 
@@ -121,6 +123,9 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         const WheelsetSpec& ws = spec_.wheelsets[i];
         const double n = ws.lumpedWheelsets;
         const double m = n * (car_.wheelsetWeight + car_.sideFrameWeight) / units::g;
+        // Attribution: the weight a scaled-down mass no longer carries, as a constant force.
+        if (spec_.wheelsetMassScale != 1 && spec_.wheelsetGravity)
+            Force::ConstantForce(forces, wheelsets_[i], Vec3(0), Vec3(0, 0, -(1 - spec_.wheelsetMassScale) * m * units::g));
         WheelRailLaw law;
         law.vertical = {n * scale * car_.wheelRailStiffness, d};
         law.lateralStiffness = n * scale * car_.wheelRailLateralStiffness;
@@ -136,7 +141,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
 double Truck::calcStaticWheelLoad(int i) const {
     const double springLoad = (spec_.carBodyLoad + car_.bolsterWeight) / 2;
     const double n = spec_.wheelsets[i].lumpedWheelsets;
-    return springLoad / double(wheelsets_.size()) + n * (car_.wheelsetWeight + car_.sideFrameWeight) / 2;
+    const double ownWeight = spec_.wheelsetGravity ? n * (car_.wheelsetWeight + car_.sideFrameWeight) / 2 : 0;
+    return springLoad / double(wheelsets_.size()) + ownWeight;
 }
 
 double Truck::setStaticState(State& s) const {

@@ -30,6 +30,9 @@ struct TruckSpec {
     std::vector<WheelsetSpec> wheelsets;
     double carBodyLoad = 0;             ///< static load on its center plate [N]
     bool threeDimensional = false;      ///< rim ring, yaw friction, longitudinal pin
+    // Attribution switches (RockingModel.h, AttributionSwitches), wheelset bodies only.
+    bool wheelsetGravity = true;        ///< false: the model excludes the wheelsets from gravity
+    double wheelsetMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
 };
 
 class Truck {

@@ -229,6 +229,31 @@ void readLimits(const toml::table& root, const std::string& src, Scenario& sc) {
     lim.rejectUnknown();
 }
 
+/// A TOML boolean only (toml++ would read 0 or 1 as a bool).
+bool getStrictBool(TableReader& table, const std::string& key, bool fallback) {
+    if (table.has(key) && !table.require(key)->is_boolean())
+        table.fail(key, TableReader::describe(*table.require(key)), "true or false");
+    return table.getBool(key, fallback);
+}
+
+void readReduced(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader reduced(getTable(root, "reduced", src, false), src, "reduced.");
+    sc.reduced.truckWeight = getStrictBool(reduced, "truck_weight", false);
+    reduced.rejectUnknown();
+}
+
+void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
+    TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
+    sc.attribution.truckGravity = getStrictBool(attribution, "truck_gravity", true);
+    if (attribution.has("truck_mass_scale")) {
+        const double f = attribution.getQuantity("truck_mass_scale", units::Dimension::Dimensionless);
+        if (!(f >= 0.001 && f <= 1))
+            attribution.fail("truck_mass_scale", fmt::format("{}", f), "a plain number in [0.001, 1]");
+        sc.attribution.truckMassScale = f;
+    }
+    attribution.rejectUnknown();
+}
+
 }  // namespace
 
 Scenario parseScenario(std::string_view text, const std::string& source) {
@@ -248,8 +273,10 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
     readRun(root, source, sc);
     readEom(root, source, sc);
     readLimits(root, source, sc);
+    readReduced(root, source, sc);
+    readAttribution(root, source, sc);
     for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown({"eom", "limits"});
+    top.rejectUnknown({"eom", "limits", "reduced", "attribution"});
     return sc;
 }
 
@@ -348,6 +375,10 @@ std::string formatScenarioToml(const Scenario& sc) {
                                    {"elastic_contacts", sc.eom.elasticContacts},
                                    {"equal_lateral_shares", sc.eom.equalLateralShares},
                                    {"small_angles", sc.eom.smallAngles}});
+
+    root.insert("reduced", toml::table{{"truck_weight", sc.reduced.truckWeight}});
+    root.insert("attribution", toml::table{{"truck_gravity", sc.attribution.truckGravity},
+                                           {"truck_mass_scale", sc.attribution.truckMassScale}});
 
     const RunLimits& l = sc.run.limits;
     toml::table limits{{"enabled", l.enabled},

@@ -4,6 +4,7 @@
 // unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
 // the key, the value and what was expected.
 #include "bespoke/EomHalfCarModel.h"
+#include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/Simulation.h"
@@ -29,6 +30,8 @@ struct Scenario {
     RunSettings run;             ///< run.limits: the [limits] table, unresolved (0 = from the car)
     double filterCutoffHz = 20;
     double severeSeparationTime = 0.010;  ///< [limits] severe_separation [s]
+    ReducedOptions reduced;            ///< [reduced] table: the reduced model's truck weight
+    AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
 };
 
 class ScenarioError : public std::runtime_error {

@@ -5,6 +5,7 @@
 #include "bespoke/StiffIntegrator.h"
 
 #include <cmath>
+#include <fmt/format.h>
 
 namespace rockroll {
 
@@ -20,7 +21,7 @@ TrackMotion makeMotion(const Scenario& sc, const RunStart& start) {
 }  // namespace
 
 std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunStart& start) {
-    ModelOptions options{sc.speed, sc.entry, makeMotion(sc, start)};
+    ModelOptions options{sc.speed, sc.entry, makeMotion(sc, start), sc.attribution};
     return makeRockingModel(sc.model, sc.car, TrackInput(sc.track), options);
 }
 
@@ -51,7 +52,8 @@ ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOpt
         }
         if (sc.model == "reduced") {
             const ReducedHalfCarModel model(
-                sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase));
+                sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase),
+                sc.reduced);
             return summarize(
                 simulateReduced(model, sc.run.duration, nullptr, start.state, resolveRunLimits(sc.run.limits, sc.car)),
                 model, opt);
@@ -66,7 +68,22 @@ ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOpt
 }
 }  // namespace
 
+void checkSwitchesApply(const Scenario& sc) {
+    const bool simbody = sc.model == "halfcar" || sc.model == "fullcar";
+    if (sc.reduced.truckWeight && sc.model != "reduced")
+        throw ScenarioError(fmt::format("{}: key 'reduced.truck_weight' = true: expected model reduced, not \"{}\" "
+                                        "(the Simbody and eom models always carry the truck's weight)",
+                                        sc.source, sc.model));
+    if (!simbody && !sc.attribution.truckGravity)
+        throw ScenarioError(fmt::format("{}: key 'attribution.truck_gravity' = false: expected model halfcar or "
+                                        "fullcar, not \"{}\"", sc.source, sc.model));
+    if (!simbody && sc.attribution.truckMassScale != 1)
+        throw ScenarioError(fmt::format("{}: key 'attribution.truck_mass_scale' = {}: expected model halfcar or "
+                                        "fullcar, not \"{}\"", sc.source, sc.attribution.truckMassScale, sc.model));
+}
+
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
+    checkSwitchesApply(sc);
     SummaryOptions opt;
     opt.forcingPeriod = sc.track.railLength / sc.speed;
     opt.filterCutoffHz = sc.filterCutoffHz;

@@ -31,5 +31,9 @@ std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunSta
 /// The equation-of-motion half car of a scenario (its [eom] simplifications).
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start = {});
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start = {});
+/// ScenarioError if a [reduced] or [attribution] switch is set for a model it does not
+/// apply to (it would be silently ignored). runScenario calls it; so does runSweeps,
+/// before its threads start.
+void checkSwitchesApply(const Scenario& sc);
 
 }  // namespace rockroll

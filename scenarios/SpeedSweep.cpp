@@ -59,6 +59,7 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
 
 std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
                                                const std::function<void(const SweepPoint&)>& onPoint) {
+    for (const auto& spec : specs) checkSwitchesApply(spec.scenario);  // a scenario error must not end a thread
     std::vector<std::vector<SweepPoint>> results(specs.size());
     std::mutex callback;
     auto report = [&](const SweepPoint& p) {

@@ -309,8 +309,13 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const std::string report = readFile((out / "REPORT.md").string());
     for (const char* section : {"Time histories", "Roll against speed", "Table 3", "Table 4", "Describing-function",
-                                "Modes", "Contact-stiffness", "degrees of freedom", "criteria"})
+                                "Modes", "Convergence", "degrees of freedom", "criteria", "Attribution"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
+    // The quick attribution and convergence sections produce their tables.
+    for (const char* table : {"| half car: `truck_gravity = false` |", "| reduced: `truck_weight = true` |",
+                              "| half car: `truck_mass_scale = 0.01` |", "**Pass or fail per case**",
+                              "| halfcar severe (16.5 mph) | severe |"})
+        EXPECT_NE(report.find(table), std::string::npos) << table;
     EXPECT_NE(report.find("Generated from commit"), std::string::npos);
     for (const char* file : {"timehistory.png", "sweep_70ton-loaded_0.75in.png", "steady_70ton-loaded_0.75in.png",
                              "sweep_70ton-loaded_0.75in_reduced.csv", "validation.json"})
