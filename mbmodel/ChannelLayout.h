@@ -14,6 +14,7 @@ struct ChannelLayout {
     std::vector<int> truckSideWheelLoad;   ///< two wheels, one truck side [lb]
     std::vector<int> singleWheelLoad;      ///< one wheel (or equivalent) [lb]
     std::vector<int> wheelLift;            ///< [in]
+    int energyStored = -1, energyInput = -1, energyDissipated = -1;  ///< cumulative [J]
 
     int add(std::string name) {
         names.push_back(std::move(name));
@@ -25,6 +26,15 @@ struct ChannelLayout {
         return -1;
     }
 };
+
+/// The energy-audit channels (mbmodel/EnergyAudit.h), recorded last by every
+/// time-domain model: stored energy (kinetic + gravity + elastic, absolute),
+/// work of the rails on the wheels since t = 0, energy dissipated since t = 0.
+inline void declareEnergyChannels(ChannelLayout& c) {
+    c.energyStored = c.add("energy_stored_J");
+    c.energyInput = c.add("energy_input_J");
+    c.energyDissipated = c.add("energy_dissipated_J");
+}
 
 /// The channels every hand-written half car records first, in this order:
 /// roll, car-body vertical and lateral motion, cross-level, center plate, side
