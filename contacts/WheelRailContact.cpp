@@ -26,7 +26,6 @@ WheelRailForces WheelRailContact::calcForces(const State& s) const {
             const double share = out.normal[i] / total;
             out.lateral[i] = -share * (law_.lateralStiffness * e[i] + law_.lateralDamping * eDot[i]);
             out.dissipatedPower += share * calcViscousDissipation(law_.lateralDamping, eDot[i]);
-            out.lateralAbsorbedPower -= out.lateral[i] * eDot[i];
         }
     for (int i = 0; i < 2; ++i) out.railInputPower += out.normal[i] * rail.zDot[i];
     return out;

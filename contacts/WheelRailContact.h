@@ -45,7 +45,6 @@ struct WheelRailForces {
     // Energy audit (W):
     double railInputPower = 0;  ///< work rate of the rails on the wheels, Σ N_i·ż_rail,i
     double dissipatedPower = 0; ///< Hunt–Crossley + Σ (N_i/ΣN)·c_y·ė_i²
-    double lateralAbsorbedPower = 0;  ///< −Σ F_y,i·ė_i, what the lateral restraint takes from the wheelset
 };
 
 class WheelRailContact : public SimTK::Force::Custom::Implementation {

@@ -13,9 +13,8 @@ using SimTK::System; using SimTK::Integrator;
 
 namespace rockroll {
 
-/// Integrates the energy-audit powers as z states: the work of the rails, the
-/// dissipation, and (diagnostic) the work taken by the wheel–rail lateral
-/// restraints. No force. The z states hold megajoules: Simbody's error control
+/// Integrates the energy-audit powers as z states: the work of the rails and the
+/// dissipation. No force. The z states hold megajoules: Simbody's error control
 /// treats z like any other state (CPodes: one relative and absolute tolerance for
 /// every y; RK: z relative to max(|z|, 1)), and energies of 10⁴–10⁵ J in joules
 /// would drive the step size. In MJ their error estimate, which is of the order
@@ -23,7 +22,7 @@ namespace rockroll {
 class RockingModel::EnergyMeter : public Force::Custom::Implementation {
 public:
     static constexpr double kScale = 1e-6;  // z = energy · kScale
-    static constexpr int kNumZ = 3;
+    static constexpr int kNumZ = 2;
     EnergyMeter(const GeneralForceSubsystem& forces, const RockingModel& model) : forces_(forces), model_(model) {}
     void calcForce(const State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<Vec3>&, Vector&) const override {}
     SimTK::Real calcPotentialEnergy(const State&) const override { return 0; }
@@ -33,11 +32,10 @@ public:
         Vector& zDot = forces_.updZDot(s);
         zDot[z0_] = kScale * p.railInput;
         zDot[z0_ + 1] = kScale * p.dissipated;
-        zDot[z0_ + 2] = kScale * p.lateralAbsorbed;
     }
     EnergyAccounts get(const State& s) const {
         const Vector& z = forces_.getZ(s);
-        return {z[z0_] / kScale, z[z0_ + 1] / kScale, z[z0_ + 2] / kScale};
+        return {z[z0_] / kScale, z[z0_ + 1] / kScale};
     }
     void reset(State& s) const {
         for (int i = 0; i < kNumZ; ++i) forces_.updZ(s)[z0_ + i] = 0;
@@ -142,7 +140,6 @@ TruckPowers RockingModel::calcPowers(const State& s) const {
         const TruckPowers p = truck->calcPowers(s);
         sum.railInput += p.railInput;
         sum.dissipated += p.dissipated;
-        sum.lateralAbsorbed += p.lateralAbsorbed;
     }
     return sum;
 }

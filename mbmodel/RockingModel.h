@@ -60,7 +60,6 @@ public:
     /// force subsystem alongside the dynamics (state realized to Velocity).
     struct EnergyAccounts {
         double input = 0, dissipated = 0;
-        double lateralAbsorbed = 0;  ///< work taken by the wheel–rail lateral restraints (diagnostic)
     };
     EnergyAccounts getEnergyAccounts(const SimTK::State& s) const;
     /// Zeroes the accumulated energies: a run continued from another run's final

@@ -166,7 +166,6 @@ TruckPowers Truck::calcPowers(const State& s) const {
         const WheelRailForces f = wr->calcForces(s);
         p.railInput += f.railInputPower;
         p.dissipated += f.dissipatedPower;
-        p.lateralAbsorbed += f.lateralAbsorbedPower;
     }
     return p;
 }

@@ -36,7 +36,6 @@ struct TruckSpec {
 struct TruckPowers {
     double railInput = 0;        ///< work rate of the rails on the wheels
     double dissipated = 0;       ///< contact damping, pin and lateral damping, friction
-    double lateralAbsorbed = 0;  ///< taken by the wheel–rail lateral restraints (diagnostic)
 };
 
 class Truck {
