@@ -4,6 +4,7 @@
 #include "mbmodel/Units.h"
 
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 namespace rockroll {
@@ -69,6 +70,14 @@ double EomHalfCarModel::calcSpringForce(double Z) const {
     return simp_.linearSprings ? laws_.spring.rate * Z : calcVerticalSpringForce(Z, laws_.spring);
 }
 
+double EomHalfCarModel::calcSpringEnergy(double Z) const {
+    return simp_.linearSprings ? calcLinearSpringEnergy(laws_.spring.rate, Z) : calcVerticalSpringEnergy(Z, laws_.spring);
+}
+
+double EomHalfCarModel::calcLockedLinkDamping() const {
+    return criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
+}
+
 EomHalfCarModel::State EomHalfCarModel::makeStaticState() const {
     const CarParameters& c = car_;
     const double scale = c.contactStiffnessScale;
@@ -120,6 +129,8 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const Point up = findStation(y, CarBody, g.plateOnCarBody + rim);
         const Point lo = findStation(y, Bolster, g.bowlOnBolster + rim);
         f.rim[side] = calcUnilateralNormalForce(lo.x.y() - up.x.y(), lo.v.y() - up.v.y(), laws_.rim);
+        f.dissipatedPower += calcUnilateralContactDissipation(lo.x.y() - up.x.y(), lo.v.y() - up.v.y(), laws_.rim);
+        f.elasticEnergy += calcUnilateralContactEnergy(lo.x.y() - up.x.y(), laws_.rim);
         applyForce(f, CarBody, up, Vec2(0, f.rim[side]));
         applyForce(f, Bolster, lo, Vec2(0, -f.rim[side]));
     }
@@ -127,6 +138,8 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const Point plate = findStation(y, CarBody, g.plateOnCarBody);
         const Point bowl = findStation(y, Bolster, g.bowlOnBolster);
         f.pin = -(laws_.pinStiffness * (plate.x.x() - bowl.x.x()) + laws_.pinDamping * (plate.v.x() - bowl.v.x()));
+        f.dissipatedPower += calcViscousDissipation(laws_.pinDamping, plate.v.x() - bowl.v.x());
+        f.elasticEnergy += calcLinearSpringEnergy(laws_.pinStiffness, plate.x.x() - bowl.x.x());
         applyForce(f, CarBody, plate, Vec2(f.pin, 0));
         applyForce(f, Bolster, bowl, Vec2(-f.pin, 0));
     }
@@ -136,6 +149,9 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const Point brg = findStation(y, Bolster, g.bearingOnBolster[side]);
         f.sideBearing[side] = calcUnilateralNormalForce(brg.x.y() - pad.x.y() - laws_.sideBearingClearance,
                                                         brg.v.y() - pad.v.y(), laws_.sideBearing);
+        f.dissipatedPower += calcUnilateralContactDissipation(brg.x.y() - pad.x.y() - laws_.sideBearingClearance,
+                                                              brg.v.y() - pad.v.y(), laws_.sideBearing);
+        f.elasticEnergy += calcUnilateralContactEnergy(brg.x.y() - pad.x.y() - laws_.sideBearingClearance, laws_.sideBearing);
         applyForce(f, CarBody, pad, Vec2(0, f.sideBearing[side]));
         applyForce(f, Bolster, brg, Vec2(0, -f.sideBearing[side]));
 
@@ -144,15 +160,24 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const Point s = findStation(y, Wheelset, g.seatOnWheelset[side]);
         const Vec2 rel = b.x - s.x, relVel = b.v - s.v;
         f.spring[side] = calcSpringForce(-rel.y());
+        f.elasticEnergy += calcSpringEnergy(-rel.y());
         if (simp_.lockBolsterLateral) {
-            const double c = criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
+            const double c = calcLockedLinkDamping();
             f.lateralSpring[side] = laws_.lateral.rate * rel.x() + c * relVel.x();
+            f.dissipatedPower += calcViscousDissipation(c, relVel.x());
+            f.elasticEnergy += calcLinearSpringEnergy(laws_.lateral.rate, rel.x());
         } else {
             f.lateralSpring[side] = calcLateralSpringForce(rel.x(), relVel.x(), laws_.lateral);
+            f.dissipatedPower += calcLateralSpringDissipation(rel.x(), relVel.x(), laws_.lateral);
+            f.elasticEnergy += calcLateralSpringEnergy(rel.x(), laws_.lateral);
         }
         const int iv = 2 * side + kWedgeVertical, ih = 2 * side + kWedgeLateral;
         f.wedge[iv] = calcBristleFriction(y[2 * kNumDofs + iv], relVel.y(), laws_.wedgeVertical);
         f.wedge[ih] = calcBristleFriction(y[2 * kNumDofs + ih], relVel.x(), laws_.wedgeLateral);
+        f.dissipatedPower += calcBristleDissipation(y[2 * kNumDofs + iv], relVel.y(), laws_.wedgeVertical) +
+                             calcBristleDissipation(y[2 * kNumDofs + ih], relVel.x(), laws_.wedgeLateral);
+        f.elasticEnergy += calcBristleEnergy(y[2 * kNumDofs + iv], laws_.wedgeVertical) +
+                           calcBristleEnergy(y[2 * kNumDofs + ih], laws_.wedgeLateral);
         const Vec2 onBolster(-f.lateralSpring[side] + f.wedge[ih].force, f.spring[side] + f.wedge[iv].force);
         applyForce(f, Bolster, b, onBolster);
         applyForce(f, Wheelset, s, -onBolster);
@@ -164,6 +189,9 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         tread[side] = findStation(y, Wheelset, g.tread[side]);
         const double delta = rail.z[side] - tread[side].x.y();
         f.wheel[side] = calcUnilateralNormalForce(delta, rail.zDot[side] - tread[side].v.y(), laws_.wheelVertical);
+        f.dissipatedPower += calcUnilateralContactDissipation(delta, rail.zDot[side] - tread[side].v.y(), laws_.wheelVertical);
+        f.railInputPower += f.wheel[side] * rail.zDot[side];
+        f.elasticEnergy += calcUnilateralContactEnergy(delta, laws_.wheelVertical);
         f.wheelLift[side] = std::max(0.0, -delta);
     }
     const double total = f.wheel[0] + f.wheel[1];
@@ -172,6 +200,8 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const double e = tread[side].x.x() - g.railY[side];
         f.wheelOffset[side] = e;
         f.wheelLateral[side] = -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
+        f.dissipatedPower += share * calcViscousDissipation(laws_.wheelLateralDamping, tread[side].v.x());
+        f.elasticEnergy += share * calcLinearSpringEnergy(laws_.wheelLateralStiffness, e);
         applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
     }
     for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;
@@ -189,6 +219,22 @@ void EomHalfCarModel::calcStateDerivative(double t, const State& y, State& yDot)
     for (int i = 0; i < kNumBristles; ++i) yDot[2 * kNumDofs + i] = f.wedge[i].deflectionRate;
 }
 
+double EomHalfCarModel::calcStoredEnergy(double t, const State& y) const {
+    double E = calcForces(t, y).elasticEnergy;
+    for (int b = 0; b < kNumBodies; ++b) {
+        const double thDot = y[kNumDofs + 3 * b], yDot = y[kNumDofs + 3 * b + 1], zDot = y[kNumDofs + 3 * b + 2];
+        E += 0.5 * inertia_[b] * thDot * thDot + 0.5 * mass_[b] * (yDot * yDot + zDot * zDot);
+        E += mass_[b] * units::g * y[3 * b + 2];
+    }
+    return E;
+}
+
+void EomHalfCarModel::calcEnergyRates(double t, const State& y, double* rates) const {
+    const Forces f = calcForces(t, y);
+    rates[0] = f.railInputPower;
+    rates[1] = f.dissipatedPower;
+}
+
 void EomHalfCarModel::declareChannels() {
     ChannelLayout& c = channels_;
     declareHalfCarBodyChannels(c);
@@ -204,9 +250,11 @@ void EomHalfCarModel::declareChannels() {
     c.add("bolster_roll_F_deg");
     c.add("bolster_lateral_F_in");
     declareEquivalentWheelsetChannels(c, true);
+    declareEnergyChannels(c);
 }
 
-void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out) const {
+void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out,
+                                   const double* energyIntegrals) const {
     const Forces f = calcForces(t, y);
     const RailState rail = rails_(t);
     const double lb = units::lbf, in = units::inch, deg = units::degree;
@@ -232,6 +280,9 @@ void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>
     for (int side : {0, 1}) out.push_back(f.wheel[side] / lb);
     for (int side : {0, 1}) out.push_back(f.wheelLift[side] / in);
     out.push_back((f.wheelOffset[0] + f.wheelOffset[1]) / 2 / in);
+    out.push_back(calcStoredEnergy(t, y));
+    for (int i = 0; i < kNumEnergyIntegrals; ++i)
+        out.push_back(energyIntegrals ? energyIntegrals[i] : std::numeric_limits<double>::quiet_NaN());
 }
 
 std::vector<std::string> EomHalfCarModel::getStateNames() const {

@@ -73,6 +73,12 @@ public:
         std::array<double, 2> wheel{0, 0}, wheelLateral{0, 0}, wheelLift{0, 0};
         std::array<double, 2> wheelOffset{0, 0};  ///< tread − rail, lateral [m]
         double pin = 0;  ///< on the car body, +y
+        // Energy audit [W]: the rails' work rate Σ N_i·ż_rail,i and the power
+        // dissipated by every element (contact damping, pin, lateral link and
+        // restraint damping, wedges), from the element laws.
+        double railInputPower = 0, dissipatedPower = 0;
+        double elasticEnergy = 0;  ///< [J], every element's
+
         Eigen::Matrix<double, kNumDofs, 1> generalized = Eigen::Matrix<double, kNumDofs, 1>::Zero();
     };
 
@@ -83,8 +89,18 @@ public:
     void calcStateDerivative(double t, const State& y, State& yDot) const;
     Forces calcForces(double t, const State& y) const;
 
+    /// Energy audit: kinetic + gravity + elastic energy of every element
+    /// (contacts, springs, pin, lateral link or restraint, bristles) [J].
+    double calcStoredEnergy(double t, const State& y) const;
+    /// The two energy-audit quadratures' integrands: {rail input power, dissipated power} [W].
+    static constexpr int kNumEnergyIntegrals = 2;
+    void calcEnergyRates(double t, const State& y, double* rates) const;
+
     const ChannelLayout& getChannels() const { return channels_; }
-    void calcChannels(double t, const State& y, std::vector<double>& out) const;
+    /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J] (the
+    /// integrals of calcEnergyRates, StiffIntegrator::getQuadrature()); NaN when null.
+    void calcChannels(double t, const State& y, std::vector<double>& out,
+                      const double* energyIntegrals = nullptr) const;
     std::vector<std::string> getStateNames() const;
     const CarParameters& getCar() const { return car_; }
     double getMass(int body) const { return mass_[body]; }
@@ -120,6 +136,8 @@ private:
     Point findStation(const State& y, int body, const Eigen::Vector2d& p) const;
     static void applyForce(Forces& f, int body, const Point& at, const Eigen::Vector2d& force);
     double calcSpringForce(double compression) const;
+    double calcSpringEnergy(double compression) const;
+    double calcLockedLinkDamping() const;
     void declareChannels();
 
     CarParameters car_;

@@ -35,6 +35,9 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
         },
         settings.accuracy, getEomAbsoluteTolerances(settings.accuracy));
     integ.setStateNames(model.getStateNames());
+    integ.setQuadrature(EomHalfCarModel::kNumEnergyIntegrals, [&model](double t, const double* y, double* rates) {
+        model.calcEnergyRates(t, Eigen::Map<const State>(y), rates);  // energy audit: rail work, dissipation
+    });
     integ.initialize(0, y0.data());
 
     RunResult result;
@@ -43,7 +46,7 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
     std::vector<double> row;
     RunGuard guard(model.getChannels(), settings.limits);
     auto record = [&](double t, const State& y) -> const std::vector<double>& {
-        model.calcChannels(t, y, row);
+        model.calcChannels(t, y, row, integ.getQuadrature().data());
         std::vector<double> full{t};
         full.insert(full.end(), row.begin(), row.end());
         result.history.samples.push_back(std::move(full));

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 namespace rockroll {
@@ -76,6 +77,8 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
     e.derivative[3] = M / inertia_;
     e.derivative[4] = pin / mass_;
     e.derivative[5] = Fz / mass_;
+    const RailState rail = rails_(t);
+    for (int i : {0, 1}) e.railInputPower += e.truck.wheel[i] * rail.zDot[i];
     return e;
 }
 
@@ -92,9 +95,30 @@ void ReducedHalfCarModel::declareChannels() {
     declareEquivalentWheelsetChannels(c, false);
     c.add("truck_support_mode");  // 0 two-point … 7 no contact (TruckEquilibrium.h)
     c.add("truck_mode_consistent");
+    declareEnergyChannels(c);
 }
 
-void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out) const {
+double ReducedHalfCarModel::calcStoredEnergy(const State& y, const TruckSolution& s) const {
+    const TruckGeometry& g = truck_;
+    double E = 0.5 * inertia_ * y[3] * y[3] + 0.5 * mass_ * (y[4] * y[4] + y[5] * y[5]) + mass_ * units::g * y[2];
+    for (int i : {0, 1}) {
+        E += calcVerticalSpringEnergy(s.compression[i], {g.Kv, g.travel, g.Kb});
+        E += s.friction[i] * s.friction[i] / (2 * g.kBristle);  // Φ = k_b·(Z − Z_a)
+    }
+    E += 2 * calcLateralSpringEnergy(s.lateral, {g.Kh, g.gibClearance, g.Kgib, 0});  // both bolster ends
+    E += s.lateralFriction * s.lateralFriction / (4 * g.kBristleLateral);       // Φ_H = 2·k_bH·(Y − Y_a)
+    E += s.pinForce * s.pinForce / (2 * g.kPin);                                 // F_h = −k_pin·d
+    return E;
+}
+
+double ReducedHalfCarModel::calcSliderDissipation(const TruckMemory& before, const TruckSolution& after) {
+    double D = std::abs(after.lateralFriction) * std::abs(after.lateralAnchor - before.lateralAnchor);
+    for (int i : {0, 1}) D += std::abs(after.friction[i]) * std::abs(after.wedgeAnchor[i] - before.wedgeAnchor[i]);
+    return D;
+}
+
+void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
+                                       const double* energyIntegrals) const {
     const double lb = units::lbf, in = units::inch, deg = units::degree;
     const RailState rail = rails_(t);
     const TruckSolution& s = e.truck;
@@ -111,6 +135,8 @@ void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluatio
     for (int side : {0, 1}) out.push_back(s.wheelLift[side] / in);
     out.push_back(double(int(s.mode.support)));
     out.push_back(s.consistent ? 1 : 0);
+    out.push_back(calcStoredEnergy(y, s));
+    for (int i : {0, 1}) out.push_back(energyIntegrals ? energyIntegrals[i] : std::numeric_limits<double>::quiet_NaN());
 }
 
 namespace {
@@ -158,8 +184,10 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     std::vector<double> row;
     ReducedRunStatistics st;
     RunGuard guard(model.getChannels(), limits);
+    double energy[2] = {0, 0};  // energy audit: rail work (RK4-weighted stage powers), slider dissipation
     auto accept = [&](double t) -> const std::vector<double>& {
         const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem);
+        energy[1] += ReducedHalfCarModel::calcSliderDissipation(mem, e.truck);
         mem.mode = e.truck.mode;
         mem.compression = e.truck.compression;
         mem.wedgeAnchor = e.truck.wedgeAnchor;
@@ -168,7 +196,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         mem.rollBolster = e.truck.rollBolster;
         mem.rollWheelset = e.truck.rollWheelset;
         if (!e.truck.consistent) ++st.inconsistentSteps;
-        model.calcChannels(t, y, e, row);
+        model.calcChannels(t, y, e, row, energy);
         std::vector<double> full{t};
         full.insert(full.end(), row.begin(), row.end());
         result.history.samples.push_back(std::move(full));
@@ -179,11 +207,12 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     long k = 0;
     for (; k < n && !result.stop; ++k) {
         const double t = k * h;
-        const State k1 = model.evaluate(t, y, mem).derivative;
-        const State k2 = model.evaluate(t + h / 2, y + h / 2 * k1, mem).derivative;
-        const State k3 = model.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
-        const State k4 = model.evaluate(t + h, y + h * k3, mem).derivative;
-        y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem);
+        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + h / 2, y + h / 2 * e1.derivative, mem);
+        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + h / 2, y + h / 2 * e2.derivative, mem);
+        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + h, y + h * e3.derivative, mem);
+        y += h / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
+        energy[0] += h / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
         if (!y.allFinite()) {
             throw IntegrationFailure(fmt::format(
                 "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",

@@ -51,6 +51,7 @@ public:
     struct Evaluation {
         State derivative;
         TruckSolution truck;
+        double railInputPower = 0;  ///< energy audit: Σ W_i·ż_rail,i [W]
     };
 
     ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options = {});
@@ -60,7 +61,15 @@ public:
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
 
     const ChannelLayout& getChannels() const { return channels_; }
-    void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out) const;
+    /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J]; NaN when null.
+    void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
+                      const double* energyIntegrals = nullptr) const;
+    /// Energy audit: car body kinetic + gravity energy plus the truck's elastic
+    /// energy (springs, gibs, wedge bristles, center pin; the rigid contacts store none) [J].
+    double calcStoredEnergy(const State& y, const TruckSolution& truck) const;
+    /// Energy dissipated by the wedges' sliders when the truck memory moves from
+    /// `before` to the solution `after`: Σ |Φ_i|·|ΔZ_a,i| + |Φ_H|·|ΔY_a| [J].
+    static double calcSliderDissipation(const TruckMemory& before, const TruckSolution& after);
     const TruckGeometry& getTruckGeometry() const { return truck_; }
     double getMass() const { return mass_; }
     double getInertia() const { return inertia_; }

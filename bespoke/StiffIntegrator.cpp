@@ -1,6 +1,6 @@
 #include "bespoke/StiffIntegrator.h"
 
-#include <cvode/cvode.h>
+#include <cvodes/cvodes.h>  // CVODES: CVODE plus quadratures (same BDF integrator)
 #include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -13,7 +13,10 @@ namespace rockroll {
 
 struct StiffIntegrator::Impl {
     SUNContext ctx = nullptr;
-    N_Vector y = nullptr, absTol = nullptr;
+    N_Vector y = nullptr, absTol = nullptr, q = nullptr;
+    bool quadInitialized = false;
+    const StiffIntegrator::Rhs* rhs = nullptr;   // CVODE's user data is this Impl
+    const StiffIntegrator::Rhs* quad = nullptr;
     SUNMatrix A = nullptr;
     SUNLinearSolver LS = nullptr;
     void* mem = nullptr;
@@ -21,11 +24,19 @@ struct StiffIntegrator::Impl {
 };
 
 namespace {
-int cvodeRhs(sunrealtype t, N_Vector y, N_Vector yDot, void* self) {
-    auto* rhs = static_cast<StiffIntegrator::Rhs*>(self);
+int cvodeRhs(sunrealtype t, N_Vector y, N_Vector yDot, void* impl) {
+    const auto* rhs = static_cast<StiffIntegrator::Impl*>(impl)->rhs;
     (*rhs)(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yDot));
     for (sunindextype i = 0; i < N_VGetLength(yDot); ++i)
         if (!std::isfinite(N_VGetArrayPointer(yDot)[i])) return 1;  // recoverable: CVODE cuts the step
+    return 0;
+}
+
+int cvodeQuadRhs(sunrealtype t, N_Vector y, N_Vector qDot, void* impl) {
+    const auto* g = static_cast<StiffIntegrator::Impl*>(impl)->quad;
+    (*g)(t, N_VGetArrayPointer(y), N_VGetArrayPointer(qDot));
+    for (sunindextype i = 0; i < N_VGetLength(qDot); ++i)
+        if (!std::isfinite(N_VGetArrayPointer(qDot)[i])) return 1;
     return 0;
 }
 
@@ -45,7 +56,8 @@ StiffIntegrator::StiffIntegrator(int n, Rhs rhs, double relTol, std::vector<doub
     m.mem = CVodeCreate(CV_BDF, m.ctx);
     CVodeInit(m.mem, cvodeRhs, 0.0, m.y);
     CVodeSVtolerances(m.mem, relTol, m.absTol);
-    CVodeSetUserData(m.mem, &rhs_);
+    m.rhs = &rhs_;
+    CVodeSetUserData(m.mem, &m);
     CVodeSetErrHandlerFn(m.mem, cvodeError, &m);
     m.A = SUNDenseMatrix(n, n, m.ctx);
     m.LS = SUNLinSol_Dense(m.y, m.A, m.ctx);
@@ -59,13 +71,30 @@ StiffIntegrator::~StiffIntegrator() {
     SUNLinSolFree(m.LS);
     SUNMatDestroy(m.A);
     N_VDestroy(m.absTol);
+    if (m.q) N_VDestroy(m.q);
     N_VDestroy(m.y);
     SUNContext_Free(&m.ctx);
+}
+
+void StiffIntegrator::setQuadrature(int nq, Rhs g) {
+    Impl& m = *impl_;
+    if (m.q) throw std::logic_error("StiffIntegrator: quadrature already set");
+    quadRhs_ = std::move(g);
+    m.quad = &quadRhs_;
+    m.q = N_VNew_Serial(nq, m.ctx);
+    q_.assign(nq, 0.0);
 }
 
 void StiffIntegrator::initialize(double t0, const double* y0) {
     for (int i = 0; i < n_; ++i) NV_Ith_S(impl_->y, i) = y0[i];
     CVodeReInit(impl_->mem, t0, impl_->y);
+    if (impl_->q) {
+        N_VConst(0.0, impl_->q);
+        if (impl_->quadInitialized) CVodeQuadReInit(impl_->mem, impl_->q);
+        else CVodeQuadInit(impl_->mem, cvodeQuadRhs, impl_->q);
+        impl_->quadInitialized = true;  // errconQ stays off: q is not in the error test
+        q_.assign(q_.size(), 0.0);
+    }
     t_ = t0;
     y_.assign(y0, y0 + n_);
 }
@@ -82,6 +111,11 @@ void StiffIntegrator::advanceTo(double tOut) {
     }
     t_ = tReached;
     for (int i = 0; i < n_; ++i) y_[i] = NV_Ith_S(impl_->y, i);
+    if (impl_->q) {
+        sunrealtype tq = tReached;
+        CVodeGetQuad(impl_->mem, &tq, impl_->q);  // interpolated to tReached like y
+        for (size_t i = 0; i < q_.size(); ++i) q_[i] = NV_Ith_S(impl_->q, i);
+    }
 }
 
 long StiffIntegrator::getNumSteps() const {

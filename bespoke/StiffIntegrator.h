@@ -31,6 +31,14 @@ public:
     StiffIntegrator(const StiffIntegrator&) = delete;
     StiffIntegrator& operator=(const StiffIntegrator&) = delete;
 
+    /// Optional quadratures q' = g(t, y), integrated by CVODE alongside y with
+    /// the same steps but outside its error control (CVodeQuadInit, errconQ
+    /// off), e.g. the energy audit's work integrals. Call before initialize();
+    /// initialize() starts them at 0.
+    void setQuadrature(int nq, Rhs g);
+    /// q at getTime() (interpolated with the state at output times).
+    const std::vector<double>& getQuadrature() const { return q_; }
+
     void initialize(double t0, const double* y0);
     /// Integrates to tOut (interpolated output); throws IntegrationFailure.
     void advanceTo(double tOut);
@@ -48,8 +56,9 @@ private:
     std::unique_ptr<Impl> impl_;
     int n_;
     Rhs rhs_;
+    Rhs quadRhs_;
     double t_ = 0;
-    std::vector<double> y_;
+    std::vector<double> y_, q_;
     std::vector<std::string> names_;
 };
 

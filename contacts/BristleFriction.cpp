@@ -36,4 +36,11 @@ BristleFrictionState calcBristleFriction(double w, double v, const BristleFricti
     return out;
 }
 
+double calcBristleEnergy(double w, const BristleFrictionLaw& law) { return 0.5 * law.stiffness * w * w; }
+
+double calcBristleDissipation(double w, double v, const BristleFrictionLaw& law) {
+    const BristleFrictionState s = calcBristleFriction(w, v, law);
+    return -s.force * v - law.stiffness * w * s.deflectionRate;
+}
+
 }  // namespace rockroll

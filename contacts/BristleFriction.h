@@ -38,4 +38,19 @@ struct BristleFrictionState {
 BristleFrictionState calcBristleFriction(double deflection, double slidingVelocity,
                                          const BristleFrictionLaw& law);
 
+/// Elastic energy of the bristle (energy audit): V = ½·k_b·w².
+double calcBristleEnergy(double deflection, const BristleFrictionLaw& law);
+
+/// Power dissipated by the element (energy audit). The friction force F acts on
+/// the body sliding at v (and −F on the other), so the element absorbs −F·v;
+/// dV/dt = k_b·w·ẇ of it is stored in the bristle and the rest is dissipated:
+///
+///     P = −F·v − k_b·w·ẇ = f·v − k_b·w·ẇ,   f = clamp(k_b·w + c_b·ẇ, −F_c, F_c)
+///
+/// Stick (ẇ = v, unclamped): P = c_b·v². Slip (α = 1, ẇ = 0): P = F_c·|v|.
+/// Clamped while sticking: P = (f − k_b·w)·v ≥ 0 since |k_b·w| ≤ F_c. The
+/// relaxation of an overstretched bristle adds k_b·w·(w ∓ w_max)/τ ≥ 0. With
+/// no normal load (F_c = 0) the bristle relaxes: P = k_b·w²/τ.
+double calcBristleDissipation(double deflection, double slidingVelocity, const BristleFrictionLaw& law);
+
 }  // namespace rockroll

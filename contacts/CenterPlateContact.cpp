@@ -1,5 +1,7 @@
 #include "contacts/CenterPlateContact.h"
 
+#include "contacts/SpringGroupLaws.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -31,12 +33,24 @@ Vec3 CenterPlateContact::calcPinDeflection(const State& s) const {
            geom_.bolster.findStationLocationInGround(s, geom_.p_BolsterBowl);
 }
 
+Vec3 CenterPlateContact::calcPinVelocity(const State& s) const {
+    return geom_.carBody.findStationVelocityInGround(s, geom_.p_CarBodyPlate) -
+           geom_.bolster.findStationVelocityInGround(s, geom_.p_BolsterBowl);
+}
+
+BristleFrictionLaw CenterPlateContact::makeYawLaw(double N) const {
+    return {law_.yawFrictionCoefficient * N * (2.0 / 3.0) * geom_.radius, law_.yawBristleStiffness,
+            law_.yawBristleDamping};
+}
+
+namespace {
+double relativeYawRate(const State& s, const CenterPlateGeometry& g) {
+    return g.carBody.getBodyAngularVelocity(s)[2] - g.bolster.getBodyAngularVelocity(s)[2];
+}
+}  // namespace
+
 BristleFrictionState CenterPlateContact::calcYawFriction(const State& s, double N) const {
-    const double yawRate = geom_.carBody.getBodyAngularVelocity(s)[2] -
-                           geom_.bolster.getBodyAngularVelocity(s)[2];
-    BristleFrictionLaw law{law_.yawFrictionCoefficient * N * (2.0 / 3.0) * geom_.radius,
-                           law_.yawBristleStiffness, law_.yawBristleDamping};
-    return calcBristleFriction(forces_.getZ(s)[zYaw_], yawRate, law);
+    return calcBristleFriction(forces_.getZ(s)[zYaw_], relativeYawRate(s, geom_), makeYawLaw(N));
 }
 
 CenterPlateForces CenterPlateContact::calcForces(const State& s) const {
@@ -48,8 +62,7 @@ CenterPlateForces CenterPlateContact::calcForces(const State& s) const {
         out.vertical += out.rim[k];
     }
     const Vec3 d = calcPinDeflection(s);
-    const Vec3 v = geom_.carBody.findStationVelocityInGround(s, geom_.p_CarBodyPlate) -
-                   geom_.bolster.findStationVelocityInGround(s, geom_.p_BolsterBowl);
+    const Vec3 v = calcPinVelocity(s);
     out.pin[1] = -(law_.pinStiffness * d[1] + law_.pinDamping * v[1]);
     if (law_.longitudinalPin) out.pin[0] = -(law_.pinStiffness * d[0] + law_.pinDamping * v[0]);
     if (hasYawFriction()) {
@@ -74,14 +87,26 @@ void CenterPlateContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForc
 
 Real CenterPlateContact::calcPotentialEnergy(const State& s) const {
     Real e = 0;
+    for (const auto& p : pairs_) e += calcUnilateralContactEnergy(p.calcPenetration(s), law_.rim);
+    const Vec3 d = calcPinDeflection(s);
+    e += calcLinearSpringEnergy(law_.pinStiffness, d[1]);
+    if (law_.longitudinalPin) e += calcLinearSpringEnergy(law_.pinStiffness, d[0]);
+    if (hasYawFriction()) e += calcBristleEnergy(forces_.getZ(s)[zYaw_], makeYawLaw(0));
+    return e;
+}
+
+double CenterPlateContact::calcDissipatedPower(const State& s) const {
+    double P = 0, N = 0;
     for (const auto& p : pairs_) {
-        const double delta = p.calcPenetration(s);
-        if (delta > 0) e += 0.5 * law_.rim.stiffness * delta * delta;
+        const double delta = p.calcPenetration(s), rate = p.calcPenetrationRate(s);
+        P += calcUnilateralContactDissipation(delta, rate, law_.rim);
+        N += calcUnilateralNormalForce(delta, rate, law_.rim);
     }
-    Vec3 d = calcPinDeflection(s);
-    d[2] = 0;
-    if (!law_.longitudinalPin) d[0] = 0;
-    return e + 0.5 * law_.pinStiffness * d.normSqr();
+    const Vec3 v = calcPinVelocity(s);
+    P += calcViscousDissipation(law_.pinDamping, v[1]);
+    if (law_.longitudinalPin) P += calcViscousDissipation(law_.pinDamping, v[0]);
+    if (hasYawFriction()) P += calcBristleDissipation(forces_.getZ(s)[zYaw_], relativeYawRate(s, geom_), makeYawLaw(N));
+    return P;
 }
 
 void CenterPlateContact::realizeAcceleration(const State& s) const {

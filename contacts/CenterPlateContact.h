@@ -54,13 +54,21 @@ public:
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
+    /// Elastic energy: rim contacts, pin spring (lateral, and longitudinal in 3-D)
+    /// and the yaw bristle.
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
+    /// Power dissipated (energy audit): rim contacts' Hunt–Crossley damping,
+    /// pin damping c_pin·|ḋ|², yaw friction (calcBristleDissipation). State
+    /// realized to Velocity.
+    double calcDissipatedPower(const SimTK::State& s) const;
     void realizeTopology(SimTK::State& s) const override;
     void realizeAcceleration(const SimTK::State& s) const override;
 
 private:
     bool hasYawFriction() const { return law_.yawFrictionCoefficient > 0; }
     SimTK::Vec3 calcPinDeflection(const SimTK::State& s) const;
+    SimTK::Vec3 calcPinVelocity(const SimTK::State& s) const;
+    BristleFrictionLaw makeYawLaw(double normalForce) const;
     BristleFrictionState calcYawFriction(const SimTK::State& s, double normalForce) const;
 
     const SimTK::GeneralForceSubsystem& forces_;

@@ -35,11 +35,15 @@ void FrictionWedge::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
 
 Real FrictionWedge::calcPotentialEnergy(const State& s) const {
     Real e = 0;
-    for (Direction d : {Vertical, Lateral}) {
-        const double w = getDeflection(s, d);
-        e += 0.5 * law_[d].stiffness * w * w;
-    }
+    for (Direction d : {Vertical, Lateral}) e += calcBristleEnergy(getDeflection(s, d), law_[d]);
     return e;
+}
+
+double FrictionWedge::calcDissipatedPower(const State& s) const {
+    const Vec3 v = link_.calcRelativeVelocity(s);
+    double P = 0;
+    for (Direction d : {Vertical, Lateral}) P += calcBristleDissipation(getDeflection(s, d), v[axisOf(d)], law_[d]);
+    return P;
 }
 
 void FrictionWedge::realizeAcceleration(const State& s) const {

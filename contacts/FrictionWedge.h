@@ -25,6 +25,9 @@ public:
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
     /// Elastic energy held in the two bristles, ½·k_b·w².
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
+    /// Friction dissipation of both directions (calcBristleDissipation, energy
+    /// audit); state realized to Velocity.
+    double calcDissipatedPower(const SimTK::State& s) const;
 
     void realizeTopology(SimTK::State& s) const override;
     void realizeAcceleration(const SimTK::State& s) const override;

@@ -17,9 +17,7 @@ void LateralSpringGroup::calcForce(const State& s, Vector_<SpatialVec>& bodyForc
 }
 
 Real LateralSpringGroup::calcPotentialEnergy(const State& s) const {
-    const double Y = calcDisplacement(s);
-    const double e = std::max(0.0, std::abs(Y) - law_.gibClearance);
-    return 0.5 * law_.rate * Y * Y + 0.5 * law_.gibRate * e * e;
+    return calcLateralSpringEnergy(calcDisplacement(s), law_);
 }
 
 }  // namespace rockroll

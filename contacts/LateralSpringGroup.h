@@ -20,6 +20,10 @@ public:
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
+    /// Gib contact dissipation (energy audit); state realized to Velocity.
+    double calcDissipatedPower(const SimTK::State& s) const {
+        return calcLateralSpringDissipation(calcDisplacement(s), link_.calcRelativeVelocity(s)[1], law_);
+    }
 
 private:
     SuspensionLink link_;

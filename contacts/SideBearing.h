@@ -23,8 +23,11 @@ public:
         pair_.applyNormalForce(s, calcForce(s), bodyForces);
     }
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
-        const double d = pair_.calcPenetration(s);
-        return d > 0 ? 0.5 * law_.stiffness * d * d : 0;
+        return calcUnilateralContactEnergy(pair_.calcPenetration(s), law_);
+    }
+    /// Hunt–Crossley dissipation (energy audit); state realized to Velocity.
+    double calcDissipatedPower(const SimTK::State& s) const {
+        return calcUnilateralContactDissipation(pair_.calcPenetration(s), pair_.calcPenetrationRate(s), law_);
     }
 
 private:

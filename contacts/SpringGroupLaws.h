@@ -18,6 +18,15 @@ struct VerticalSpringLaw {
 ///     P = K_v·travel + K_bottom·(Z − travel) Z > travel (coils solid)
 double calcVerticalSpringForce(double compression, const VerticalSpringLaw& law);
 
+/// Elastic energy of the vertical spring group (energy audit), V with P = dV/dZ:
+///
+///     V = 0                                                  Z < 0
+///     V = ½·K_v·Z²                                           0 ≤ Z ≤ travel
+///     V = ½·K_v·travel² + K_v·travel·b + ½·K_bottom·b²        b = Z − travel > 0
+///
+/// The group is elastic: it dissipates nothing.
+double calcVerticalSpringEnergy(double compression, const VerticalSpringLaw& law);
+
 /// Inverse of calcVerticalSpringForce for P ≥ 0 (used to place the static state).
 double calcVerticalSpringCompression(double force, const VerticalSpringLaw& law);
 
@@ -34,5 +43,20 @@ struct LateralSpringLaw {
 ///
 /// where f_gib is the unilateral contact law (zero inside the clearance).
 double calcLateralSpringForce(double Y, double Ydot, const LateralSpringLaw& law);
+
+/// Elastic energy of the lateral group and gib (energy audit):
+///
+///     V = ½·K_h·Y² + V_gib(|Y| − c_gib)     (V_gib: calcUnilateralContactEnergy)
+double calcLateralSpringEnergy(double Y, const LateralSpringLaw& law);
+
+/// Power dissipated by the gib contact (the spring itself is elastic):
+///
+///     P = P_gib(|Y| − c_gib, d|Y|/dt) ≥ 0    (calcUnilateralContactDissipation)
+double calcLateralSpringDissipation(double Y, double Ydot, const LateralSpringLaw& law);
+
+/// A linear spring and viscous damper F = −(k·x + c·ẋ) (center pin, wheel–rail
+/// lateral restraint, locked bolster link): stored V = ½·k·x², dissipated P = c·ẋ² ≥ 0.
+inline double calcLinearSpringEnergy(double stiffness, double x) { return 0.5 * stiffness * x * x; }
+inline double calcViscousDissipation(double damping, double velocity) { return damping * velocity * velocity; }
 
 }  // namespace rockroll

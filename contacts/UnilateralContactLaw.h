@@ -21,4 +21,20 @@ struct UnilateralContactLaw {
 double calcUnilateralNormalForce(double penetration, double penetrationRate,
                                  const UnilateralContactLaw& law);
 
+/// Elastic energy held in the contact (energy audit):
+///
+///     V = ½·k·δ²   for δ > 0,   V = 0 otherwise,
+///
+/// so −dV/dδ is the elastic part k·δ of the normal force.
+double calcUnilateralContactEnergy(double penetration, const UnilateralContactLaw& law);
+
+/// Power dissipated by the contact (energy audit). The force f does work f·δ̇ on
+/// the contact; dV/dt = k·δ·δ̇ of it is stored, the rest is dissipated:
+///
+///     P = (f − k·δ)·δ̇ = k·d·δ·δ̇²  ≥ 0                  (unclamped)
+///     P = −k·δ·δ̇                  ≥ 0                  (clamped, f = 0: then δ̇ < −1/d < 0)
+///     P = 0                                             (open, δ ≤ 0)
+double calcUnilateralContactDissipation(double penetration, double penetrationRate,
+                                        const UnilateralContactLaw& law);
+
 }  // namespace rockroll

@@ -1,5 +1,7 @@
 #include "contacts/WheelRailContact.h"
 
+#include "contacts/SpringGroupLaws.h"
+
 using namespace SimTK;
 
 namespace rockroll {
@@ -14,15 +16,19 @@ WheelRailForces WheelRailContact::calcForces(const State& s) const {
         const double delta = rail.z[i] - p[2];
         out.normal[i] = calcUnilateralNormalForce(delta, rail.zDot[i] - v[2], law_.vertical);
         out.lift[i] = std::max(0.0, -delta);
+        out.dissipatedPower += calcUnilateralContactDissipation(delta, rail.zDot[i] - v[2], law_.vertical);
         e[i] = p[1] - yRail_[i];
         out.offset[i] = e[i];
         eDot[i] = v[1];
     }
     const double total = out.normal[0] + out.normal[1];
     if (total > 0)
-        for (int i = 0; i < 2; ++i)
-            out.lateral[i] = -(out.normal[i] / total) *
-                             (law_.lateralStiffness * e[i] + law_.lateralDamping * eDot[i]);
+        for (int i = 0; i < 2; ++i) {
+            const double share = out.normal[i] / total;
+            out.lateral[i] = -share * (law_.lateralStiffness * e[i] + law_.lateralDamping * eDot[i]);
+            out.dissipatedPower += share * calcViscousDissipation(law_.lateralDamping, eDot[i]);
+        }
+    for (int i = 0; i < 2; ++i) out.railInputPower += out.normal[i] * rail.zDot[i];
     return out;
 }
 
@@ -34,14 +40,22 @@ void WheelRailContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForces
 }
 
 Real WheelRailContact::calcPotentialEnergy(const State& s) const {
-    // Only the vertical springs store energy; the rails move, so this is the
-    // contacts' elastic energy, not a conserved potential.
+    // The rails move, so this is the contacts' elastic energy, not a conserved
+    // potential. The lateral shares depend on the normal forces, hence on
+    // velocities: the state must be realized to Velocity.
     const RailHeights rail = rails_(s.getTime());
     Real e = 0;
+    double N[2], eLat[2];
     for (int i = 0; i < 2; ++i) {
-        const double delta = rail.z[i] - wheelset_.findStationLocationInGround(s, p_Tread_[i])[2];
-        if (delta > 0) e += 0.5 * law_.vertical.stiffness * delta * delta;
+        const Vec3 p = wheelset_.findStationLocationInGround(s, p_Tread_[i]);
+        const double delta = rail.z[i] - p[2];
+        e += calcUnilateralContactEnergy(delta, law_.vertical);
+        N[i] = calcUnilateralNormalForce(delta, rail.zDot[i] - wheelset_.findStationVelocityInGround(s, p_Tread_[i])[2],
+                                         law_.vertical);
+        eLat[i] = p[1] - yRail_[i];
     }
+    if (N[0] + N[1] > 0)
+        for (int i = 0; i < 2; ++i) e += N[i] / (N[0] + N[1]) * calcLinearSpringEnergy(law_.lateralStiffness, eLat[i]);
     return e;
 }
 

@@ -11,6 +11,13 @@
 //
 // so when one wheel lifts all lateral force passes through the other rail and
 // the wheelset pivots about it; with both wheels up there is none.
+//
+// Energy audit: the rails move only vertically, so they do work at the rate
+// Σ N_i·ż_rail,i. The contacts store Σ ½·k·δ_i² and dissipate their
+// Hunt–Crossley part; the lateral restraint stores Σ s_i·½·k_y·e_i² (s_i = N_i/ΣN)
+// and dissipates Σ s_i·c_y·ė_i². Because the shares s_i change with the loads the
+// restraint is not exactly conservative: it also does the work −Σ ṡ_i·½·k_y·e_i²,
+// which is second order (e_L − e_R = gauge·(cos θ − 1)) and shows in the balance.
 #include "contacts/UnilateralContact.h"
 
 #include <array>
@@ -36,6 +43,9 @@ struct WheelRailForces {
     std::array<double, 2> lateral{0, 0};  ///< on the wheelset [N]
     std::array<double, 2> lift{0, 0};     ///< tread-to-rail gap, ≥ 0 [m]
     std::array<double, 2> offset{0, 0};   ///< e_i = y_tread,i − y_rail,i [m]
+    // Energy audit (W):
+    double railInputPower = 0;  ///< work rate of the rails on the wheels, Σ N_i·ż_rail,i
+    double dissipatedPower = 0; ///< Hunt–Crossley + Σ (N_i/ΣN)·c_y·ė_i²
 };
 
 class WheelRailContact : public SimTK::Force::Custom::Implementation {
@@ -52,6 +62,8 @@ public:
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
+    /// Elastic energy: Σ ½·k·δ_i² of the wheels in contact, plus the lateral
+    /// restraint's Σ (N_i/ΣN)·½·k_y·e_i².
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
 
 private:

@@ -34,6 +34,15 @@ struct ChannelLayout {
     }
 };
 
+/// The energy-audit channels (mbmodel/EnergyAudit.h), recorded last by every
+/// time-domain model: stored energy (kinetic + gravity + elastic, absolute),
+/// work of the rails on the wheels since t = 0, energy dissipated since t = 0.
+inline void declareEnergyChannels(ChannelLayout& c) {
+    c.energyStored = c.add("energy_stored_J");
+    c.energyInput = c.add("energy_input_J");
+    c.energyDissipated = c.add("energy_dissipated_J");
+}
+
 /// The channels every hand-written half car records first, in this order:
 /// roll, car-body vertical and lateral motion, cross-level, center plate, side
 /// bearings (left, right) — the names the Simbody half car gives them.

@@ -13,6 +13,40 @@ using SimTK::System; using SimTK::Integrator;
 
 namespace rockroll {
 
+/// Integrates the energy-audit powers as z states: the work of the rails and the
+/// dissipation. No force. The z states hold megajoules: Simbody's error control
+/// treats z like any other state (CPodes: one relative and absolute tolerance for
+/// every y; RK: z relative to max(|z|, 1)), and energies of 10⁴–10⁵ J in joules
+/// would drive the step size. In MJ their error estimate, which is of the order
+/// of h·P·(accuracy), stays far below the other states' and the steps do not change.
+class RockingModel::EnergyMeter : public Force::Custom::Implementation {
+public:
+    static constexpr double kScale = 1e-6;  // z = energy · kScale
+    static constexpr int kNumZ = 2;
+    EnergyMeter(const GeneralForceSubsystem& forces, const RockingModel& model) : forces_(forces), model_(model) {}
+    void calcForce(const State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<Vec3>&, Vector&) const override {}
+    SimTK::Real calcPotentialEnergy(const State&) const override { return 0; }
+    void realizeTopology(State& s) const override { z0_ = forces_.allocateZ(s, Vector(kNumZ, 0.0)); }
+    void realizeAcceleration(const State& s) const override {
+        const TruckPowers p = model_.calcPowers(s);
+        Vector& zDot = forces_.updZDot(s);
+        zDot[z0_] = kScale * p.railInput;
+        zDot[z0_ + 1] = kScale * p.dissipated;
+    }
+    EnergyAccounts get(const State& s) const {
+        const Vector& z = forces_.getZ(s);
+        return {z[z0_] / kScale, z[z0_ + 1] / kScale};
+    }
+    void reset(State& s) const {
+        for (int i = 0; i < kNumZ; ++i) forces_.updZ(s)[z0_ + i] = 0;
+    }
+
+private:
+    const GeneralForceSubsystem& forces_;
+    const RockingModel& model_;
+    mutable SimTK::ZIndex z0_;
+};
+
 RockingModel::RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options)
     : car_(car), track_(track), options_(options), matter_(system_), forces_(system_) {
     // Attribution runs get a gravity that can exclude bodies, once the trucks exist (addTrucks).
@@ -33,6 +67,9 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
             for (int w = 0; w < truck->getNumWheelsets() && !a.truckGravity; ++w)
                 gravity.setDefaultBodyIsExcluded(truck->getWheelset(w).getMobilizedBodyIndex(), true);
     }
+    auto* meter = new EnergyMeter(forces_, *this);
+    Force::Custom(forces_, meter);
+    energyMeter_ = meter;
     system_.realizeTopology();
     State s = makeStaticState(false);
     staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];
@@ -64,6 +101,7 @@ State RockingModel::makeStaticState(bool requireLevelRails) const {
     double plateZ = 0;
     for (const auto& truck : trucks_) plateZ += truck->setStaticState(s) / double(trucks_.size());
     setCarBodyHeight(s, plateZ + car_.cgAboveCenterPlate);
+    resetEnergyAccounts(s);
     for (const auto& truck : trucks_)
         for (int i = 0; i < truck->getNumWheelsets() && requireLevelRails; ++i) {
             const RailHeights r = truck->getWheelRail(i).getRailHeights(0);
@@ -83,6 +121,7 @@ void RockingModel::declareChannels() {
     channels_.add("car_body_vertical_in");
     channels_.add("car_body_lateral_in");
     for (const auto& truck : trucks_) truck->declareChannels(channels_);
+    declareEnergyChannels(channels_);
 }
 
 void RockingModel::calcChannels(const State& s, std::vector<double>& out) const {
@@ -96,6 +135,24 @@ void RockingModel::calcChannels(const State& s, std::vector<double>& out) const 
     *o++ = (p[2] - staticCarBodyHeight_) / units::inch;
     *o++ = p[1] / units::inch;
     for (const auto& truck : trucks_) o = truck->calcChannels(s, o);
+    const EnergyAccounts a = getEnergyAccounts(s);
+    *o++ = calcMechanicalEnergy(s);
+    *o++ = a.input;
+    *o++ = a.dissipated;
+}
+
+RockingModel::EnergyAccounts RockingModel::getEnergyAccounts(const State& s) const { return energyMeter_->get(s); }
+
+void RockingModel::resetEnergyAccounts(State& s) const { energyMeter_->reset(s); }
+
+TruckPowers RockingModel::calcPowers(const State& s) const {
+    TruckPowers sum;
+    for (const auto& truck : trucks_) {
+        const TruckPowers p = truck->calcPowers(s);
+        sum.railInput += p.railInput;
+        sum.dissipated += p.dissipated;
+    }
+    return sum;
 }
 
 double RockingModel::calcMechanicalEnergy(const State& s) const {

@@ -66,8 +66,23 @@ public:
     /// One sample of every channel (no time column).
     void calcChannels(const SimTK::State& s, std::vector<double>& out) const;
 
-    /// Total mechanical energy of the bodies and conservative elements [J].
+    /// Total mechanical energy of the bodies and conservative elements [J]:
+    /// kinetic + gravity + elastic energy of every element (contacts, springs,
+    /// center pin, wheel–rail lateral restraint, friction bristles).
     double calcMechanicalEnergy(const SimTK::State& s) const;
+
+    /// Energy audit: cumulative work of the rails on the wheels and energy
+    /// dissipated since the start of the run [J], integrated as z states of the
+    /// force subsystem alongside the dynamics (state realized to Velocity).
+    struct EnergyAccounts {
+        double input = 0, dissipated = 0;
+    };
+    EnergyAccounts getEnergyAccounts(const SimTK::State& s) const;
+    /// Zeroes the accumulated energies: a run continued from another run's final
+    /// state counts its energies from its own start.
+    void resetEnergyAccounts(SimTK::State& s) const;
+    /// Sum of every truck's element powers [W].
+    TruckPowers calcPowers(const SimTK::State& s) const;
 
 protected:
     RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
@@ -88,6 +103,8 @@ protected:
     std::vector<std::unique_ptr<Truck>> trucks_;
     ChannelLayout channels_;
     double staticCarBodyHeight_ = 0;  // z of the CG at rest [m]
+    class EnergyMeter;
+    const EnergyMeter* energyMeter_ = nullptr;  // owned by the force subsystem
 };
 
 /// Builds "halfcar" or "fullcar".

@@ -1,5 +1,6 @@
 #include "mbmodel/RunSummary.h"
 
+#include "mbmodel/EnergyAudit.h"
 #include "mbmodel/LowPassFilter.h"
 
 #include <algorithm>
@@ -113,6 +114,7 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
         for (size_t i = 0; i < x.size(); ++i) lifted[i] = x[i] > 0;
         r.wheelLiftLongestS = std::max(r.wheelLiftLongestS, calcDurations(lifted, dt).longest);
     }
+    r.energyBalanceError = calcEnergyBalanceError(h, layout);
     r.regime = classifyRegime(r.centerPlateSeparationLongestS, sideBearingContact, opt.severeSeparationTime);
     if (run.stop) {
         r.regime = run.stop->regime;

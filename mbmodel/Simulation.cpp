@@ -69,6 +69,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
             throw std::invalid_argument(fmt::format("initial state has {} entries; the model has {}", initialY.size(),
                                                     s0.getNY()));
         for (int i = 0; i < s0.getNY(); ++i) s0.updY()[i] = initialY[i];
+        model.resetEnergyAccounts(s0);  // the energy audit counts from this run's start
         s0.setTime(0);
     }
     integ->initialize(s0);

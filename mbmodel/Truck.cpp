@@ -162,6 +162,20 @@ double Truck::setStaticState(State& s) const {
     return bolsterZ + car_.centerPlateAboveSprings - plateDelta;
 }
 
+TruckPowers Truck::calcPowers(const State& s) const {
+    TruckPowers p;
+    p.dissipated = centerPlate_->calcDissipatedPower(s);
+    for (int side : {kLeft, kRight})
+        p.dissipated += sideBearing_[side]->calcDissipatedPower(s) + lateralSpring_[side]->calcDissipatedPower(s) +
+                        wedge_[side]->calcDissipatedPower(s);
+    for (const auto* wr : wheelRail_) {
+        const WheelRailForces f = wr->calcForces(s);
+        p.railInput += f.railInputPower;
+        p.dissipated += f.dissipatedPower;
+    }
+    return p;
+}
+
 void Truck::declareChannels(ChannelLayout& c) const {
     const std::string& T = spec_.label;
     c.add(fmt::format("cross_level_{}_in", T));

@@ -35,6 +35,12 @@ struct TruckSpec {
     double wheelsetMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
 };
 
+/// Energy-audit powers of one truck's elements [W] (state realized to Velocity).
+struct TruckPowers {
+    double railInput = 0;        ///< work rate of the rails on the wheels
+    double dissipated = 0;       ///< contact damping, pin and lateral damping, friction
+};
+
 class Truck {
 public:
     /// p_CarBodyPlate: the car body's center-plate point in the car body frame.
@@ -46,6 +52,8 @@ public:
     /// height 0 under the truck's static load; returns the ground height the
     /// car body's plate must have.
     double setStaticState(SimTK::State& s) const;
+
+    TruckPowers calcPowers(const SimTK::State& s) const;
 
     void declareChannels(ChannelLayout& layout) const;
     /// Writes this truck's channels, in declareChannels order, starting at out.
