@@ -90,7 +90,8 @@ bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
         }
     }
 
-    if (layout_.energyStored >= 0 && layout_.energyInput >= 0 && layout_.energyDissipated >= 0) {
+    if (limits_.energyRunawayFloor > 0 && layout_.energyStored >= 0 && layout_.energyInput >= 0 &&
+        layout_.energyDissipated >= 0) {
         const double E = ch(layout_.energyStored), W = ch(layout_.energyInput), D = ch(layout_.energyDissipated);
         if (first_) energy0_ = E;
         const double excess = (E - energy0_) - (W - D);

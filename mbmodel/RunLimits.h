@@ -32,7 +32,9 @@ struct RunLimits {
     /// Runaway: stored energy exceeding the rails' work less dissipation by more
     /// than this fraction of max(|work|, dissipated, floor).
     double energyRunawayFraction = 0.5;
-    /// Energy floor of the runaway test [J]; 0 = car-body weight × 1 in.
+    /// Energy floor of the runaway test [J]; resolveRunLimits sets it to the
+    /// car-body weight × 1 in. Left 0 (limits not resolved for a car, as in the
+    /// describing function's internal twin runs) the energy test is off.
     double energyRunawayFloor = 0;
     /// Wall-clock limit of one run [s]; past it the run fails numerically.
     double maxWallTime = 3600;

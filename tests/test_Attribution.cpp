@@ -158,9 +158,13 @@ TEST(Attribution, SimbodyTruckMassScaleKeepsTheStaticLoads) {
         const Static small = makeStatic(m, {true, 0.01});
         EXPECT_LT(small.maxUDot, 1e-4) << m;  // accelerations of a 100× lighter body: round-off ×100
         ASSERT_EQ(on.channels.size(), small.channels.size());
-        for (size_t i = 0; i < on.channels.size(); ++i)
+        for (size_t i = 0; i < on.channels.size(); ++i) {
+            // Stored energy is not a load: the scaled masses' gravity energy is
+            // smaller, and the constant force that puts their weight back has none.
+            if (int(i) == on.model->getChannels().energyStored) continue;
             EXPECT_NEAR(on.channels[i], small.channels[i], 1e-6 * (1 + std::abs(on.channels[i])))
                 << m << " " << on.model->getChannels().names[i];
+        }
     }
     // And a short run at rest stays there.
     Scenario sc = test_cases::makeCase("halfcar", 0.0, 16.5, 0.2);
