@@ -5,7 +5,10 @@
 //   build/bin/rockroll_bench [--sim-seconds=T] [google-benchmark flags]
 #include "scenarios/ScenarioRun.h"
 
+#include "bespoke/ReducedHalfCarModel.h"
+
 #include <benchmark/benchmark.h>
+#include <chrono>
 #include <cstring>
 #include <fmt/format.h>
 #include <map>
@@ -22,6 +25,13 @@ struct Measured {
     double getRealizationsPerSimSecond() const { return double(realizations) / simS; }
 };
 std::map<std::string, Measured> gMeasured;
+// One recorded run per model, to time the run monitor on its own samples.
+struct Recorded {
+    RunResult result;
+    ChannelLayout layout;
+    RunLimits limits;
+};
+std::map<std::string, Recorded> gRecorded;
 
 void runCase(benchmark::State& state, const std::string& model, const std::string& method, double accuracy) {
     Scenario sc = getDefaultScenario();
@@ -32,6 +42,14 @@ void runCase(benchmark::State& state, const std::string& model, const std::strin
     ScenarioRun run;
     for (auto _ : state) run = runScenario(sc);
     const RunSummary& r = run.summary;
+    if (!gRecorded.count(model)) {
+        ChannelLayout layout;
+        if (model == "halfcar" || model == "fullcar") layout = makeScenarioModel(sc)->getChannels();
+        else if (model == "eom") layout = makeScenarioEomModel(sc).getChannels();
+        else layout = ReducedHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), TrackMotion{sc.speed},
+                                                                              sc.car.wheelbase), sc.reduced).getChannels();
+        gRecorded[model] = {run.result, layout, resolveRunLimits(sc.run.limits, sc.car)};
+    }
     Measured m{r.simTimeS / r.wallTimeS, r.maxRollDeg, r.steps, r.realizations, r.wallTimeS, r.simTimeS};
     gMeasured[fmt::format("{} {} {:g}", model, method, accuracy)] = m;
     state.counters["sim_s_per_wall_s"] = m.realTimeFactor;
@@ -106,6 +124,21 @@ int main(int argc, char** argv) {
         if (gMeasured.count(a) && gMeasured.count(b))
             fmt::print("  {} / {}: {:.2f}x\n", a, b, gMeasured[a].realTimeFactor / gMeasured[b].realTimeFactor);
     };
+    // The run monitor (RunGuard) fed every recorded sample of the run again: its
+    // share of that run's wall time.
+    fmt::print("\nrun monitor cost (RunGuard on every recorded sample, as in the run):\n");
+    for (auto& [model, rec] : gRecorded) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const int repeats = 20;
+        for (int k = 0; k < repeats; ++k) {
+            RunGuard guard(rec.layout, rec.limits);
+            RunResult sink;
+            for (const auto& row : rec.result.history.samples) benchmark::DoNotOptimize(guard.check(row, sink));
+        }
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / repeats;
+        fmt::print("  {:<10} {:>8.3f} ms for {} samples = {:.3f} % of the run's {:.2f} s wall\n", model, 1e3 * s,
+                   rec.result.history.samples.size(), 100 * s / rec.result.wallTime, rec.result.wallTime);
+    }
     fmt::print("\nratios (same run):\n");
     ratio("halfcar cpodes 0.0001", "fullcar cpodes 0.0001");
     ratio("halfcar cpodes 0.0001", "halfcar rkmerson 0.0001");

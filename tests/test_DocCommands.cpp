@@ -8,7 +8,11 @@
 //  * Quoted commands are concrete: no placeholders ([--opt], <car>, A|B, or
 //    all-capital words such as A or N). A placeholder fails this test.
 //  * `rockroll SUB` alone names the sub-command: `rockroll SUB --help` must exit 0.
-//  * Run for real, in a fresh directory under the build tree with a link to
+//  * A code-block command whose comment says `# exit N` must exit with N (e.g. a
+//    run that overturns, exit 5); every other command must exit 0.
+//  * Commands of one doc file share one directory and run in the order quoted, so
+//    a command may read what an earlier one wrote (`run --from-summary`).
+//  * Run for real, in that directory under the build tree with a link to
 //    scenarios/: `run` (with `--duration-s 0.2` appended when it has no duration),
 //    `modes`, and `steady --stability none`. Their `--json` output must be one JSON
 //    document, and every history.csv they write must read back as a table.
@@ -43,6 +47,7 @@ struct DocCommand {
     std::string file;  ///< README.md, docs/x.md
     int line = 0;
     std::string text;  ///< as quoted, whitespace collapsed, build step and comment removed
+    int expectedExit = 0;  ///< from a `# exit N` comment
 };
 
 std::string collapse(const std::string& s) {
@@ -93,10 +98,12 @@ std::vector<DocCommand> extractCommands(const std::string& name, const std::stri
         }
         if (fenced) {
             std::string l = line;
-            static const std::regex comment(R"(\s+#.*$)");
+            static const std::regex comment(R"(\s+#.*$)"), exitComment(R"(#\s*exit\s+(\d+))");
+            std::smatch m;
+            const int expected = std::regex_search(l, m, exitComment) ? std::stoi(m[1].str()) : 0;
             l = std::regex_replace(l, comment, "");
             const std::string cmd = asCommand(l);
-            if (!cmd.empty()) out.push_back({name, lineNo, cmd});
+            if (!cmd.empty()) out.push_back({name, lineNo, cmd, expected});
         } else {
             if (prose.empty()) proseStart = lineNo;
             prose += line + "\n";
@@ -194,7 +201,10 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
     int index = 0, ran = 0, parsed = 0, named = 0;
     for (const auto& c : commands) {
         SCOPED_TRACE(c.file + ":" + std::to_string(c.line) + ": " + c.text);
-        const fs::path dir = root / ("cmd" + std::to_string(index++));
+        ++index;
+        std::string fileDir = c.file;
+        std::replace(fileDir.begin(), fileDir.end(), '/', '_');
+        const fs::path dir = root / fileDir;
         const std::string placeholder = placeholderIn(c.text);
         EXPECT_EQ(placeholder, "") << "quote a concrete command (see the convention in tests/test_DocCommands.cpp)";
         if (!placeholder.empty()) continue;
@@ -219,13 +229,14 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
         }
         const Outcome o = runRockroll(dir, args, false);
         ++ran;
-        EXPECT_EQ(o.exitCode, 0) << o.err;
+        EXPECT_EQ(o.exitCode, c.expectedExit) << o.err;
         if (has(t, "--json")) {
             EXPECT_TRUE(nlohmann::json::accept(o.out)) << "--json must print one JSON document:\n" << o.out;
         } else {
             EXPECT_FALSE(o.out.empty());
         }
         for (const auto& e : fs::recursive_directory_iterator(dir, fs::directory_options::none)) {
+            if (e.path().filename() == "scenarios") continue;
             if (e.path().filename() != "history.csv") continue;
             try {
                 const auto table = rockroll::test::parseCsvTable(readFile(e.path()));
