@@ -200,8 +200,10 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         const double e = tread[side].x.x() - g.railY[side];
         f.wheelOffset[side] = e;
         f.wheelLateral[side] = -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
-        f.dissipatedPower += share * calcViscousDissipation(laws_.wheelLateralDamping, tread[side].v.x());
-        f.elasticEnergy += share * calcLinearSpringEnergy(laws_.wheelLateralStiffness, e);
+        // Energy audit: the restraint is the rails' lateral reaction, an external
+        // force (not conservative with load shares; WheelRailContact.h): its work
+        // on the wheel is rail input, and it stores and dissipates nothing.
+        f.railInputPower += f.wheelLateral[side] * tread[side].v.x();
         applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
     }
     for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;

@@ -73,9 +73,10 @@ public:
         std::array<double, 2> wheel{0, 0}, wheelLateral{0, 0}, wheelLift{0, 0};
         std::array<double, 2> wheelOffset{0, 0};  ///< tread − rail, lateral [m]
         double pin = 0;  ///< on the car body, +y
-        // Energy audit [W]: the rails' work rate Σ N_i·ż_rail,i and the power
-        // dissipated by every element (contact damping, pin, lateral link and
-        // restraint damping, wedges), from the element laws.
+        // Energy audit [W]: the rails' work rate Σ N_i·ż_rail,i + Σ F_y,i·ė_i (the
+        // lateral restraint is the rails' external force, WheelRailContact.h) and
+        // the power dissipated by every element (contact damping, pin, lateral
+        // link, wedges), from the element laws.
         double railInputPower = 0, dissipatedPower = 0;
         double elasticEnergy = 0;  ///< [J], every element's
 

@@ -26,9 +26,10 @@ WheelRailForces WheelRailContact::calcForces(const State& s) const {
         for (int i = 0; i < 2; ++i) {
             const double share = out.normal[i] / total;
             out.lateral[i] = -share * (law_.lateralStiffness * e[i] + law_.lateralDamping * eDot[i]);
-            out.dissipatedPower += share * calcViscousDissipation(law_.lateralDamping, eDot[i]);
         }
-    for (int i = 0; i < 2; ++i) out.railInputPower += out.normal[i] * rail.zDot[i];
+    // The rails' work: vertical through the contacts, lateral by the restraint on
+    // the wheel (the rails do not move laterally; ė_i is the tread point's velocity).
+    for (int i = 0; i < 2; ++i) out.railInputPower += out.normal[i] * rail.zDot[i] + out.lateral[i] * eDot[i];
     return out;
 }
 
@@ -41,21 +42,12 @@ void WheelRailContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForces
 
 Real WheelRailContact::calcPotentialEnergy(const State& s) const {
     // The rails move, so this is the contacts' elastic energy, not a conserved
-    // potential. The lateral shares depend on the normal forces, hence on
-    // velocities: the state must be realized to Velocity.
+    // potential. The lateral restraint is outside the audited system (header).
     const RailHeights rail = rails_(s.getTime());
     Real e = 0;
-    double N[2], eLat[2];
-    for (int i = 0; i < 2; ++i) {
-        const Vec3 p = wheelset_.findStationLocationInGround(s, p_Tread_[i]);
-        const double delta = rail.z[i] - p[2];
-        e += calcUnilateralContactEnergy(delta, law_.vertical);
-        N[i] = calcUnilateralNormalForce(delta, rail.zDot[i] - wheelset_.findStationVelocityInGround(s, p_Tread_[i])[2],
+    for (int i = 0; i < 2; ++i)
+        e += calcUnilateralContactEnergy(rail.z[i] - wheelset_.findStationLocationInGround(s, p_Tread_[i])[2],
                                          law_.vertical);
-        eLat[i] = p[1] - yRail_[i];
-    }
-    if (N[0] + N[1] > 0)
-        for (int i = 0; i < 2; ++i) e += N[i] / (N[0] + N[1]) * calcLinearSpringEnergy(law_.lateralStiffness, eLat[i]);
     return e;
 }
 

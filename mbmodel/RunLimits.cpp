@@ -66,6 +66,16 @@ bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
             // Left wheel (+y) climbs its rail when the wheelset moves +y past flange
             // contact with that wheel lifted above its flange; the right one mirrored.
             const double lateral = ch(ws.lateral) * units::inch;
+            // Both wheels above their flanges and the wheelset past flange contact
+            // either way: no flange can hold it, it lands beside a rail.
+            if (lift[0] > limits_.flangeHeight && lift[1] > limits_.flangeHeight &&
+                std::abs(lateral) > limits_.flangeClearance)
+                return stop("derailed", fmt::format("both wheels of wheelset {} lifted above the flange height ({:.2f} and "
+                                                    "{:.2f} in) while it moved {:.2f} in laterally (flange contact at "
+                                                    "{:.3f} in)",
+                                                    w + 1, lift[0] / units::inch, lift[1] / units::inch,
+                                                    std::abs(lateral) / units::inch,
+                                                    limits_.flangeClearance / units::inch));
             for (int side : {0, 1}) {
                 const double towardRail = side == 0 ? lateral : -lateral;
                 if (lift[side] > limits_.flangeHeight && towardRail > limits_.flangeClearance)

@@ -101,6 +101,17 @@ TEST(RunLimits, LiftAboveFlangeWithLateralPastFlangeContactIsDerailed) {
     EXPECT_NE(r.stop->reason.find("wheel_lift_F1_L_in"), std::string::npos) << r.stop->reason;
 }
 
+TEST(RunLimits, AirborneWheelsetDriftingPastFlangeContactIsDerailed) {
+    Layout L;
+    RunGuard g(L.c, resolvedLimits());
+    RunResult r;
+    // Both wheels above the flanges but centred: not yet.
+    EXPECT_FALSE(g.check(L.row(0, 3, 1.2, 1.1, 0.2), r));
+    EXPECT_TRUE(g.check(L.row(0.002, 3, 1.2, 1.1, -0.6), r));
+    ASSERT_TRUE(r.stop);
+    EXPECT_EQ(r.stop->regime, "derailed");
+}
+
 TEST(RunLimits, BothWheelsOffLongerThanTheLimitIsDerailed) {
     Layout L;
     const RunLimits l = resolvedLimits();
