@@ -136,6 +136,7 @@ int steadyCommand(const SteadyOptions& o) {
                              : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
                                "at the stretch's middle point";
         j["provenance"] = makeProvenance(sc, getCommandLine());
+        j["provenance"]["model"] = "describing function";  // the scenario's [run] model is not used here
         j["branches"] = nlohmann::ordered_json::array();
         for (const auto& b : branches) {
             nlohmann::ordered_json jb;
