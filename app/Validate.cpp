@@ -30,24 +30,9 @@ namespace {
 // Infrastructure: parallel jobs, git commit, scenario loading
 // =============================================================================
 
+/// The one job pool of validate (app/ValidateSections.h).
 void runParallel(std::vector<std::function<void()>> jobs, int threads) {
-    std::atomic<size_t> next{0};
-    std::mutex errorMutex;
-    std::string firstError;
-    auto worker = [&] {
-        for (size_t i = next++; i < jobs.size(); i = next++) {
-            try {
-                jobs[i]();
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(errorMutex);
-                if (firstError.empty()) firstError = e.what();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int k = 0; k < std::max(1, threads); ++k) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    if (!firstError.empty()) throw std::runtime_error(firstError);
+    validate_detail::runJobs(std::move(jobs), threads);
 }
 
 std::string runShell(const std::string& cmd) {
