@@ -1,10 +1,21 @@
 #!/usr/bin/env bash
-# Installs the Debian packages rockroll needs (when missing) and builds it into
-# build/. Used by both commands of the README.
+# Installs the Debian packages rockroll needs (when missing), builds Simbody 3.7 in
+# Release from Debian's source package once (third_party/simbody/build-simbody.sh,
+# cached in build/third_party/simbody), and builds rockroll into build/. Used by both
+# commands of the README.
+#   ROCKROLL_SYSTEM_SIMBODY=ON ./build.sh   links Debian's libsimbody-dev instead
+#                                           (built without NDEBUG; measured ~2x slower)
 set -euo pipefail
 cd "$(dirname "$0")"
+system_simbody="${ROCKROLL_SYSTEM_SIMBODY:-OFF}"
 
-packages=(build-essential cmake libsimbody-dev libeigen3-dev libtomlplusplus-dev libcli11-dev
+if [ "$system_simbody" = "ON" ]; then
+  simbody_packages=(libsimbody-dev)
+else
+  # Simbody's own build needs LAPACK/BLAS; apt-get source needs dpkg-dev.
+  simbody_packages=(liblapack-dev libblas-dev dpkg-dev patch xz-utils)
+fi
+packages=("${simbody_packages[@]}" build-essential cmake libeigen3-dev libtomlplusplus-dev libcli11-dev
           libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsundials-dev libssl-dev python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
@@ -18,5 +29,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+if [ "$system_simbody" != "ON" ]; then
+  third_party/simbody/build-simbody.sh build/third_party/simbody
+fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DROCKROLL_SYSTEM_SIMBODY="$system_simbody" >/dev/null
 cmake --build build -j"$(nproc)" >&2

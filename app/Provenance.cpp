@@ -21,12 +21,15 @@ void setCommandLine(int argc, char** argv) {
 }
 const std::string& getCommandLine() { return commandLine(); }
 
-std::string getVersionString() { return fmt::format("rockroll {} (commit {})", kVersion, kGitCommit); }
+std::string getVersionString() {
+    return fmt::format("rockroll {} (commit {})\n{}", kVersion, kGitCommit, ROCKROLL_SIMBODY_BUILD);
+}
 
 nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& command) {
     nlohmann::ordered_json p;
     p["rockroll_version"] = kVersion;
     p["git_commit"] = kGitCommit;
+    p["simbody"] = ROCKROLL_SIMBODY_BUILD;
     p["command"] = command;
     p["scenario_file"] = sc.source;
     p["scenario_sha256"] = sc.sourceSha256;
