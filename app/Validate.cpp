@@ -8,6 +8,7 @@
 #include "mbmodel/ModalAnalysis.h"
 #include "scenarios/SpeedSweep.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -68,7 +69,8 @@ struct Settings {
     fs::path out;
     int jobs = 2;
     double rollLimitDeg = 6, wheelLoadLimit = 0.10;
-    std::vector<std::string> sweepModels;
+    std::vector<std::string> sweepModels;      ///< swept on every case
+    std::vector<std::string> fullCarSweepCars; ///< cars the full car is also swept on (all their amplitudes)
     double sweepStep = 1, sweepDuration = 20, runDuration = 20;
 };
 
@@ -176,24 +178,28 @@ void findJumps(SweepResult& r) {
 std::vector<SweepResult> runAllSweeps(const Settings& s) {
     std::vector<SweepSpec> specs;
     std::vector<SweepResult> results;
+    std::vector<std::pair<std::string, SweepCase>> pairs;
     for (const auto& m : s.sweepModels)
-        for (const auto& c : kSweepCases) {
-            SweepResult r;
-            r.c = c;
-            r.model = m;
-            results.push_back(r);
-            for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
-                SweepSpec spec;
-                spec.scenario = loadCar(c.car);
-                spec.scenario.model = m;
-                spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
-                spec.scenario.run.duration = s.sweepDuration;
-                spec.scenario.run.outputRate = 100;
-                spec.fromMph = c.fromMph, spec.toMph = c.toMph, spec.stepMph = s.sweepStep;
-                spec.direction = dir;
-                specs.push_back(spec);
-            }
+        for (const auto& c : kSweepCases) pairs.emplace_back(m, c);
+    for (const auto& c : kSweepCases)
+        if (std::count(s.fullCarSweepCars.begin(), s.fullCarSweepCars.end(), c.car)) pairs.emplace_back("fullcar", c);
+    for (const auto& [m, c] : pairs) {
+        SweepResult r;
+        r.c = c;
+        r.model = m;
+        results.push_back(r);
+        for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
+            SweepSpec spec;
+            spec.scenario = loadCar(c.car);
+            spec.scenario.model = m;
+            spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
+            spec.scenario.run.duration = s.sweepDuration;
+            spec.scenario.run.outputRate = 100;
+            spec.fromMph = c.fromMph, spec.toMph = c.toMph, spec.stepMph = s.sweepStep;
+            spec.direction = dir;
+            specs.push_back(spec);
         }
+    }
     size_t total = 0, done = 0;
     for (const auto& sp : specs) total += getSweepSpeeds(sp).size();
     const auto out = runSweeps(specs, s.jobs, [&](const SweepPoint&) {
@@ -231,6 +237,13 @@ void writeSweepCsv(const Settings& s, const SweepResult& r) {
     });
 }
 
+/// "reduced, halfcar (every case) and fullcar (70ton-loaded)".
+std::string describeSweptModels(const Settings& s) {
+    std::string text = fmt::format("{} (every case)", fmt::join(s.sweepModels, ", "));
+    if (!s.fullCarSweepCars.empty()) text += fmt::format(" and fullcar ({})", fmt::join(s.fullCarSweepCars, ", "));
+    return text;
+}
+
 std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta) {
     std::string md = "## 2. Roll against speed, swept up and down (report Figures 11, 14, 17, 18, 21, 24)\n\n";
     md += fmt::format(
@@ -238,7 +251,7 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
         "--step-mph {} --duration-s {} --direction both` for models: {}. Each speed starts from the final state of "
         "the previous one; the speed ramps over 1 s so the rails never jump. Data `sweep_<car>_<A>in_<model>.csv`, "
         "plots `sweep_<car>_<A>in.png` (roll) and `sweep_loads_<car>_<A>in.png` (wheel lift and loads).\n\n",
-        s.sweepStep, s.sweepDuration, fmt::join(s.sweepModels, ", "));
+        s.sweepStep, s.sweepDuration, describeSweptModels(s));
     md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | max steady roll, deg |\n"
           "|---|---|---|---|---|---|---|\n";
     for (const auto& r : sweeps) {
@@ -400,7 +413,7 @@ std::string makeTables34(const Settings& s, const std::vector<SweepResult>& swee
                       "report's; the others run once from rest at that speed for {} s (`rockroll run scenarios/<car>.toml "
                       "--model M --amplitude-in A --speed-mph V --duration-s {}`). Each cell: value (difference from the "
                       "report). Loads are filtered maxima (20 Hz).\n\n",
-                      fmt::join(s.sweepModels, ", "), s.runDuration, s.runDuration);
+                      describeSweptModels(s), s.runDuration, s.runDuration);
     for (size_t i = 0; i < kTable3.size(); ++i) {
         const auto& row = kTable3[i];
         std::optional<std::array<double, 3>> df;
@@ -686,6 +699,8 @@ int validateCommand(const ValidateOptions& o) {
     s.rollLimitDeg = o.rollLimitDeg;
     s.wheelLoadLimit = o.wheelLoadLimit;
     s.sweepModels = o.quick ? std::vector<std::string>{"reduced"} : std::vector<std::string>{"reduced", "halfcar"};
+    // The full car, at Release-Simbody speed (bench/README.md), on the report's main car at all three amplitudes.
+    if (!o.quick) s.fullCarSweepCars = {"70ton-loaded"};
     s.sweepStep = o.quick ? 1.0 : 0.5;
     s.sweepDuration = o.quick ? 15 : 30;
     s.runDuration = 20;

@@ -26,16 +26,7 @@ CenterPlateContact::CenterPlateContact(const GeneralForceSubsystem& forces, Cent
 
 void CenterPlateContact::realizeTopology(State& s) const {
     if (hasYawFriction()) zYaw_ = forces_.allocateZ(s, Vector(1, 0.0));
-}
-
-Vec3 CenterPlateContact::calcPinDeflection(const State& s) const {
-    return geom_.carBody.findStationLocationInGround(s, geom_.p_CarBodyPlate) -
-           geom_.bolster.findStationLocationInGround(s, geom_.p_BolsterBowl);
-}
-
-Vec3 CenterPlateContact::calcPinVelocity(const State& s) const {
-    return geom_.carBody.findStationVelocityInGround(s, geom_.p_CarBodyPlate) -
-           geom_.bolster.findStationVelocityInGround(s, geom_.p_BolsterBowl);
+    cache_.allocate(forces_, s);
 }
 
 BristleFrictionLaw CenterPlateContact::makeYawLaw(double N) const {
@@ -43,42 +34,63 @@ BristleFrictionLaw CenterPlateContact::makeYawLaw(double N) const {
             law_.yawBristleDamping};
 }
 
-namespace {
-double relativeYawRate(const State& s, const CenterPlateGeometry& g) {
-    return g.carBody.getBodyAngularVelocity(s)[2] - g.bolster.getBodyAngularVelocity(s)[2];
+void CenterPlateContact::evaluate(const State& s, Evaluation& e) const {
+    const BodyKinematics car = BodyKinematics::calc(geom_.carBody, s);
+    const BodyKinematics bowl = BodyKinematics::calc(geom_.bolster, s);
+    CenterPlateForces& out = e.forces;
+    out.rim.resize(pairs_.size());
+    out.vertical = 0;
+    out.pin = Vec3(0);
+    out.yawTorque = 0;
+    out.yawSlipping = false;
+    double P = 0;
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+        const double delta = pairs_[k].calcPenetration(car, bowl), rate = pairs_[k].calcPenetrationRate(car, bowl);
+        out.rim[k] = calcUnilateralNormalForce(delta, rate, law_.rim);
+        out.vertical += out.rim[k];
+        P += calcUnilateralContactDissipation(delta, rate, law_.rim);
+    }
+    const Vec3 d = car.findStationLocationInGround(geom_.p_CarBodyPlate) -
+                   bowl.findStationLocationInGround(geom_.p_BolsterBowl);
+    const Vec3 v = car.findStationVelocityInGround(geom_.p_CarBodyPlate) -
+                   bowl.findStationVelocityInGround(geom_.p_BolsterBowl);
+    out.pin[1] = -(law_.pinStiffness * d[1] + law_.pinDamping * v[1]);
+    if (law_.longitudinalPin) out.pin[0] = -(law_.pinStiffness * d[0] + law_.pinDamping * v[0]);
+    P += calcViscousDissipation(law_.pinDamping, v[1]);
+    if (law_.longitudinalPin) P += calcViscousDissipation(law_.pinDamping, v[0]);
+    e.yawDeflectionRate = 0;
+    if (hasYawFriction()) {
+        const double w = forces_.getZ(s)[zYaw_], rate = car.V_GB[0][2] - bowl.V_GB[0][2];
+        const BristleFrictionLaw yawLaw = makeYawLaw(out.vertical);
+        const BristleFrictionState yaw = calcBristleFriction(w, rate, yawLaw);
+        out.yawTorque = yaw.force;
+        out.yawSlipping = yaw.slipping;
+        e.yawDeflectionRate = yaw.deflectionRate;
+        P += calcBristleDissipation(w, rate, yawLaw);
+    }
+    e.dissipatedPower = P;
 }
-}  // namespace
 
-BristleFrictionState CenterPlateContact::calcYawFriction(const State& s, double N) const {
-    return calcBristleFriction(forces_.getZ(s)[zYaw_], relativeYawRate(s, geom_), makeYawLaw(N));
+const CenterPlateContact::Evaluation& CenterPlateContact::findOrEvaluate(const State& s, Evaluation& scratch) const {
+    if (const Evaluation* cached = cache_.find(forces_, s)) return *cached;
+    evaluate(s, scratch);
+    return scratch;
 }
 
 CenterPlateForces CenterPlateContact::calcForces(const State& s) const {
-    CenterPlateForces out;
-    out.rim.resize(pairs_.size());
-    for (size_t k = 0; k < pairs_.size(); ++k) {
-        out.rim[k] = calcUnilateralNormalForce(pairs_[k].calcPenetration(s),
-                                               pairs_[k].calcPenetrationRate(s), law_.rim);
-        out.vertical += out.rim[k];
-    }
-    const Vec3 d = calcPinDeflection(s);
-    const Vec3 v = calcPinVelocity(s);
-    out.pin[1] = -(law_.pinStiffness * d[1] + law_.pinDamping * v[1]);
-    if (law_.longitudinalPin) out.pin[0] = -(law_.pinStiffness * d[0] + law_.pinDamping * v[0]);
-    if (hasYawFriction()) {
-        const BristleFrictionState yaw = calcYawFriction(s, out.vertical);
-        out.yawTorque = yaw.force;
-        out.yawSlipping = yaw.slipping;
-    }
-    return out;
+    Evaluation scratch;
+    return findOrEvaluate(s, scratch).forces;
 }
 
 void CenterPlateContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
                                    Vector_<Vec3>&, Vector&) const {
-    const CenterPlateForces f = calcForces(s);
-    for (size_t k = 0; k < pairs_.size(); ++k) pairs_[k].applyNormalForce(s, f.rim[k], bodyForces);
-    geom_.carBody.applyForceToBodyPoint(s, geom_.p_CarBodyPlate, f.pin, bodyForces);
-    geom_.bolster.applyForceToBodyPoint(s, geom_.p_BolsterBowl, -f.pin, bodyForces);
+    Evaluation& e = cache_.upd(forces_, s);
+    evaluate(s, e);
+    const CenterPlateForces& f = e.forces;
+    const BodyPose car = BodyPose::calc(geom_.carBody, s), bowl = BodyPose::calc(geom_.bolster, s);
+    for (size_t k = 0; k < pairs_.size(); ++k) pairs_[k].applyNormalForce(car, bowl, f.rim[k], bodyForces);
+    car.applyForceToBodyPoint(geom_.p_CarBodyPlate, f.pin, bodyForces);
+    bowl.applyForceToBodyPoint(geom_.p_BolsterBowl, -f.pin, bodyForces);
     if (f.yawTorque != 0) {
         geom_.carBody.applyBodyTorque(s, Vec3(0, 0, f.yawTorque), bodyForces);
         geom_.bolster.applyBodyTorque(s, Vec3(0, 0, -f.yawTorque), bodyForces);
@@ -86,9 +98,11 @@ void CenterPlateContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForc
 }
 
 Real CenterPlateContact::calcPotentialEnergy(const State& s) const {
+    const BodyPose car = BodyPose::calc(geom_.carBody, s), bowl = BodyPose::calc(geom_.bolster, s);
     Real e = 0;
-    for (const auto& p : pairs_) e += calcUnilateralContactEnergy(p.calcPenetration(s), law_.rim);
-    const Vec3 d = calcPinDeflection(s);
+    for (const auto& p : pairs_) e += calcUnilateralContactEnergy(p.calcPenetration(car, bowl), law_.rim);
+    const Vec3 d = car.findStationLocationInGround(geom_.p_CarBodyPlate) -
+                   bowl.findStationLocationInGround(geom_.p_BolsterBowl);
     e += calcLinearSpringEnergy(law_.pinStiffness, d[1]);
     if (law_.longitudinalPin) e += calcLinearSpringEnergy(law_.pinStiffness, d[0]);
     if (hasYawFriction()) e += calcBristleEnergy(forces_.getZ(s)[zYaw_], makeYawLaw(0));
@@ -96,25 +110,14 @@ Real CenterPlateContact::calcPotentialEnergy(const State& s) const {
 }
 
 double CenterPlateContact::calcDissipatedPower(const State& s) const {
-    double P = 0, N = 0;
-    for (const auto& p : pairs_) {
-        const double delta = p.calcPenetration(s), rate = p.calcPenetrationRate(s);
-        P += calcUnilateralContactDissipation(delta, rate, law_.rim);
-        N += calcUnilateralNormalForce(delta, rate, law_.rim);
-    }
-    const Vec3 v = calcPinVelocity(s);
-    P += calcViscousDissipation(law_.pinDamping, v[1]);
-    if (law_.longitudinalPin) P += calcViscousDissipation(law_.pinDamping, v[0]);
-    if (hasYawFriction()) P += calcBristleDissipation(forces_.getZ(s)[zYaw_], relativeYawRate(s, geom_), makeYawLaw(N));
-    return P;
+    Evaluation scratch;
+    return findOrEvaluate(s, scratch).dissipatedPower;
 }
 
 void CenterPlateContact::realizeAcceleration(const State& s) const {
     if (!hasYawFriction()) return;
-    double N = 0;
-    for (const auto& p : pairs_)
-        N += calcUnilateralNormalForce(p.calcPenetration(s), p.calcPenetrationRate(s), law_.rim);
-    forces_.updZDot(s)[zYaw_] = calcYawFriction(s, N).deflectionRate;
+    Evaluation scratch;
+    forces_.updZDot(s)[zYaw_] = findOrEvaluate(s, scratch).yawDeflectionRate;
 }
 
 }  // namespace rockroll

@@ -11,6 +11,7 @@
 // Yaw (3-D only): Coulomb friction torque T_c = μ·N·(2/3)·a_c (uniform pressure
 // over the plate), as an elasto-plastic bristle in relative yaw.
 #include "contacts/BristleFriction.h"
+#include "contacts/DynamicsCache.h"
 #include "contacts/UnilateralContact.h"
 
 #include <vector>
@@ -64,18 +65,29 @@ public:
     void realizeTopology(SimTK::State& s) const override;
     void realizeAcceleration(const SimTK::State& s) const override;
 
+    /// Everything one evaluation gives: computed once per realization in
+    /// calcForce and kept in the State (DynamicsCache) for realizeAcceleration,
+    /// the energy meter and the recorder.
+    struct Evaluation {
+        CenterPlateForces forces;
+        double dissipatedPower = 0;    ///< [W]
+        double yawDeflectionRate = 0;  ///< bristle ẇ [rad/s]
+    };
+
 private:
+    /// Reads each body's kinematics once for all rim points and the pin.
+    void evaluate(const SimTK::State& s, Evaluation& e) const;
+    /// The cached evaluation at Dynamics stage and above, else a fresh one in `scratch`.
+    const Evaluation& findOrEvaluate(const SimTK::State& s, Evaluation& scratch) const;
     bool hasYawFriction() const { return law_.yawFrictionCoefficient > 0; }
-    SimTK::Vec3 calcPinDeflection(const SimTK::State& s) const;
-    SimTK::Vec3 calcPinVelocity(const SimTK::State& s) const;
     BristleFrictionLaw makeYawLaw(double normalForce) const;
-    BristleFrictionState calcYawFriction(const SimTK::State& s, double normalForce) const;
 
     const SimTK::GeneralForceSubsystem& forces_;
     CenterPlateGeometry geom_;
     CenterPlateLaw law_;
     std::vector<VerticalPointPair> pairs_;  // rim point on car body above bowl point
     mutable SimTK::ZIndex zYaw_;            // topology-stage index of the yaw bristle
+    DynamicsCache<Evaluation> cache_;
 };
 
 }  // namespace rockroll

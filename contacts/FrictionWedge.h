@@ -4,6 +4,7 @@
 // Each direction is an elasto-plastic bristle (BristleFriction.h) whose
 // deflection is a continuous state of the force subsystem, so the wedge sticks.
 #include "contacts/BristleFriction.h"
+#include "contacts/DynamicsCache.h"
 #include "contacts/SuspensionLink.h"
 
 namespace rockroll {
@@ -32,12 +33,23 @@ public:
     void realizeTopology(SimTK::State& s) const override;
     void realizeAcceleration(const SimTK::State& s) const override;
 
+    /// Both directions from one relative velocity, computed once per realization
+    /// in calcForce and kept in the State (DynamicsCache).
+    struct Evaluation {
+        BristleFrictionState friction[2];
+        double dissipatedPower = 0;  ///< [W]
+    };
+
 private:
+    void evaluate(const SimTK::State& s, Evaluation& e) const;
+    const Evaluation& findOrEvaluate(const SimTK::State& s, Evaluation& scratch) const;
+
     const SimTK::GeneralForceSubsystem& forces_;
     SuspensionLink link_;
     BristleFrictionLaw law_[2];
     // Topology-stage index of the two bristle states, as Simbody's own elements keep it.
     mutable SimTK::ZIndex z0_;
+    DynamicsCache<Evaluation> cache_;
 };
 
 }  // namespace rockroll

@@ -2,6 +2,7 @@
 // Unilateral compliant normal contact: the law shared by the center plate rim,
 // side bearings and wheel–rail contacts, and a helper that measures the
 // approach of two body points along ground z.
+#include "contacts/BodyKinematics.h"
 #include "contacts/UnilateralContactLaw.h"
 
 #include <Simbody.h>
@@ -19,6 +20,21 @@ struct VerticalPointPair {
 
     double calcPenetration(const SimTK::State& s) const;
     double calcPenetrationRate(const SimTK::State& s) const;
+    /// The same, from the two bodies' kinematics already read (BodyKinematics.h).
+    double calcPenetration(const BodyPose& upperBody, const BodyPose& lowerBody) const {
+        return lowerBody.findStationLocationInGround(p_LowerPoint)[2] -
+               upperBody.findStationLocationInGround(p_UpperPoint)[2] - clearance;
+    }
+    double calcPenetrationRate(const BodyKinematics& upperBody, const BodyKinematics& lowerBody) const {
+        return lowerBody.findStationVelocityInGround(p_LowerPoint)[2] -
+               upperBody.findStationVelocityInGround(p_UpperPoint)[2];
+    }
+    void applyNormalForce(const BodyPose& upperBody, const BodyPose& lowerBody, double f,
+                          SimTK::Vector_<SimTK::SpatialVec>& bodyForces) const {
+        if (f == 0) return;
+        upperBody.applyForceToBodyPoint(p_UpperPoint, SimTK::Vec3(0, 0, f), bodyForces);
+        lowerBody.applyForceToBodyPoint(p_LowerPoint, SimTK::Vec3(0, 0, -f), bodyForces);
+    }
     /// Pushes the bodies apart with force f ≥ 0 along ground z.
     void applyNormalForce(const SimTK::State& s, double f,
                           SimTK::Vector_<SimTK::SpatialVec>& bodyForces) const;

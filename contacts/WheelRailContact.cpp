@@ -7,12 +7,20 @@ using namespace SimTK;
 namespace rockroll {
 
 WheelRailForces WheelRailContact::calcForces(const State& s) const {
+    if (const WheelRailForces* cached = cache_.find(wheelset_.getMatterSubsystem(), s)) return *cached;
     WheelRailForces out;
+    evaluate(s, out);
+    return out;
+}
+
+void WheelRailContact::evaluate(const State& s, WheelRailForces& out) const {
+    out = WheelRailForces{};
     const RailHeights rail = rails_(s.getTime());
+    const BodyKinematics wheelset = BodyKinematics::calc(wheelset_, s);
     double e[2], eDot[2];
     for (int i = 0; i < 2; ++i) {
-        const Vec3 p = wheelset_.findStationLocationInGround(s, p_Tread_[i]);
-        const Vec3 v = wheelset_.findStationVelocityInGround(s, p_Tread_[i]);
+        const Vec3 p = wheelset.findStationLocationInGround(p_Tread_[i]);
+        const Vec3 v = wheelset.findStationVelocityInGround(p_Tread_[i]);
         const double delta = rail.z[i] - p[2];
         out.normal[i] = calcUnilateralNormalForce(delta, rail.zDot[i] - v[2], law_.vertical);
         out.lift[i] = std::max(0.0, -delta);
@@ -30,14 +38,15 @@ WheelRailForces WheelRailContact::calcForces(const State& s) const {
     // The rails' work: vertical through the contacts, lateral by the restraint on
     // the wheel (the rails do not move laterally; ė_i is the tread point's velocity).
     for (int i = 0; i < 2; ++i) out.railInputPower += out.normal[i] * rail.zDot[i] + out.lateral[i] * eDot[i];
-    return out;
 }
 
 void WheelRailContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
                                  Vector_<Vec3>&, Vector&) const {
-    const WheelRailForces f = calcForces(s);
+    WheelRailForces& f = cache_.upd(wheelset_.getMatterSubsystem(), s);
+    evaluate(s, f);
+    const BodyPose wheelset = BodyPose::calc(wheelset_, s);
     for (int i = 0; i < 2; ++i)
-        wheelset_.applyForceToBodyPoint(s, p_Tread_[i], Vec3(0, f.lateral[i], f.normal[i]), bodyForces);
+        wheelset.applyForceToBodyPoint(p_Tread_[i], Vec3(0, f.lateral[i], f.normal[i]), bodyForces);
 }
 
 Real WheelRailContact::calcPotentialEnergy(const State& s) const {

@@ -25,6 +25,7 @@
 // wheelset drifted to, so that "energy" jumps by ½·k_y·e_i² with no work done
 // (measured: −328 kJ of imbalance by 0.8 s on a 50 in cross-level case, where
 // the wheelset left both rails and drifted 6.5 in; docs/model.md "Energy audit").
+#include "contacts/DynamicsCache.h"
 #include "contacts/UnilateralContact.h"
 
 #include <array>
@@ -64,6 +65,7 @@ public:
         : wheelset_(std::move(wheelset)), p_Tread_(p_Tread), yRail_(yRail),
           rails_(std::move(rails)), law_(law) {}
 
+    /// At Dynamics stage and above, the forces calcForce computed for this State.
     WheelRailForces calcForces(const SimTK::State& s) const;
     RailHeights getRailHeights(double t) const { return rails_(t); }
 
@@ -72,13 +74,19 @@ public:
     /// Elastic energy: Σ ½·k·δ_i² of the wheels in contact. The lateral
     /// restraint is external (its work is rail input) and holds none.
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
+    /// The cache lives in the matter subsystem (this element has no handle on its
+    /// force subsystem); q, u, z and time changes invalidate Dynamics system-wide.
+    void realizeTopology(SimTK::State& s) const override { cache_.allocate(wheelset_.getMatterSubsystem(), s); }
 
 private:
+    void evaluate(const SimTK::State& s, WheelRailForces& out) const;
+
     SimTK::MobilizedBody wheelset_;
     std::array<SimTK::Vec3, 2> p_Tread_;
     std::array<double, 2> yRail_;
     RailInputFunction rails_;
     WheelRailLaw law_;
+    DynamicsCache<WheelRailForces> cache_;
 };
 
 }  // namespace rockroll

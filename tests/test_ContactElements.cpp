@@ -250,3 +250,39 @@ TEST(CenterPlateContact, YawFrictionSticksBelowItsLimitAndSlipsAbove) {
         }
     }
 }
+
+// The elements keep one evaluation per realization in the State (DynamicsCache.h).
+// What they return from it must equal a fresh evaluation, and a change of z, u or
+// time must never expose the old value.
+TEST(DynamicsCache, CachedEvaluationEqualsFreshAndNeverGoesStale) {
+    Rig rig;
+    const double Fc = 17800, kb = Fc / 2.54e-4;
+    auto* w = new FrictionWedge(rig.forces, linkBetween(rig.upper, rig.lower, 0), {Fc, kb, 50}, {Fc, kb, 50});
+    SimTK::Force::Custom(rig.forces, w);
+    SimTK::State s = rig.init();
+    Rig::place(rig.upper, s, 0, 0.01);
+    rig.upper.setOneU(s, 2, 0.2);
+    w->setDeflection(s, FrictionWedge::Vertical, 1e-4);
+
+    rig.system.realize(s, SimTK::Stage::Velocity);  // below Dynamics: computed afresh
+    const double freshP = w->calcDissipatedPower(s);
+    const double freshF = w->calcFriction(s, FrictionWedge::Vertical).force;
+    EXPECT_NE(freshP, 0);
+    rig.system.realize(s, SimTK::Stage::Acceleration);  // calcForce has stored its evaluation
+    EXPECT_EQ(w->calcDissipatedPower(s), freshP);
+    EXPECT_EQ(w->calcFriction(s, FrictionWedge::Vertical).force, freshF);
+
+    w->setDeflection(s, FrictionWedge::Vertical, -1e-4);  // z changed: the stored value is stale
+    const double afterZ = w->calcFriction(s, FrictionWedge::Vertical).force;
+    EXPECT_NE(afterZ, freshF);
+    rig.system.realize(s, SimTK::Stage::Acceleration);
+    EXPECT_EQ(w->calcFriction(s, FrictionWedge::Vertical).force, afterZ);
+
+    const double beforeU = w->calcDissipatedPower(s);
+    rig.upper.setOneU(s, 2, -0.5);  // u changed
+    rig.system.realize(s, SimTK::Stage::Velocity);
+    const double afterU = w->calcDissipatedPower(s);
+    EXPECT_NE(afterU, beforeU);
+    rig.system.realize(s, SimTK::Stage::Acceleration);
+    EXPECT_EQ(w->calcDissipatedPower(s), afterU);
+}
