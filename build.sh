@@ -3,6 +3,8 @@
 # Release from Debian's source package once (third_party/simbody/build-simbody.sh,
 # cached in build/third_party/simbody), and builds rockroll into build/. Used by both
 # commands of the README.
+#   ./build.sh [TARGET...]                  builds everything, or only the CMake targets
+#                                           named (the README's first command builds `rockroll`)
 #   ROCKROLL_SYSTEM_SIMBODY=ON ./build.sh   links Debian's libsimbody-dev instead
 #                                           (built without NDEBUG; measured ~2x slower)
 set -euo pipefail
@@ -33,4 +35,6 @@ if [ "$system_simbody" != "ON" ]; then
   third_party/simbody/build-simbody.sh build/third_party/simbody
 fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DROCKROLL_SYSTEM_SIMBODY="$system_simbody" >/dev/null
-cmake --build build -j"$(nproc)" >&2
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+cmake --build build -j"$(nproc)" "${targets[@]}" >&2

@@ -3,7 +3,7 @@
 //
 // Convention for the docs (docs/validation.md, "Commands quoted in the docs"):
 //  * A command is a line of a fenced code block, or an inline code span, that
-//    starts with `rockroll`, `build/bin/rockroll` or `./build.sh && build/bin/rockroll`
+//    starts with `rockroll`, `build/bin/rockroll` or `./build.sh [targets] && build/bin/rockroll`
 //    (the build step is not run; a trailing `# comment` in a code block is dropped).
 //  * Quoted commands are concrete: no placeholders ([--opt], <car>, A|B, or
 //    all-capital words such as A or N). A placeholder fails this test.
@@ -67,7 +67,7 @@ std::vector<std::string> split(const std::string& s) {
 /// The quoted command without its build step, or "" when `s` is not a rockroll command.
 std::string asCommand(std::string s) {
     s = collapse(s);
-    static const std::regex re(R"(^(?:\./build\.sh && )?(?:build/bin/)?(rockroll(?: .*)?)$)");
+    static const std::regex re(R"(^(?:\./build\.sh(?: [A-Za-z_]+)* && )?(?:build/bin/)?(rockroll(?: .*)?)$)");
     std::smatch m;
     return std::regex_match(s, m, re) ? m[1].str() : "";
 }
@@ -164,7 +164,7 @@ std::string placeholderIn(const std::string& cmd) {
 }  // namespace
 
 TEST(DocCommands, ExtractionFindsInlineBlockAndWrappedCommands) {
-    const std::string md = "Intro `rockroll run a.toml\n--json` and `ls -l`.\n\n```sh\n./build.sh && build/bin/rockroll\n"
+    const std::string md = "Intro `rockroll run a.toml\n--json` and `ls -l`.\n\n```sh\n./build.sh rockroll && build/bin/rockroll\n"
                            "build/bin/rockroll validate --quick      # comment\nctest\n```\nSee `rockroll modes`.\n";
     const auto c = extractCommands("x.md", md);
     ASSERT_EQ(c.size(), 4u);
