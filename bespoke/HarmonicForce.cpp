@@ -29,8 +29,8 @@ void addPiece(const TrigSeries& g, const TrigSeries::Angles& a0, const TrigSerie
         const TrigSeries Q = g * weights[j];
         out[j].updMean() += Q.integrate(a0, a1) / (2 * kPi);
         for (int k = 1; k <= harmonics; ++k) {
-            out[j].updCos(k) += (Q * TrigSeries::cosine(k)).integrate(a0, a1) / kPi;
-            out[j].updSin(k) += (Q * TrigSeries::sine(k)).integrate(a0, a1) / kPi;
+            out[j].updCos(k) += Q.timesHarmonic(k, false).integrate(a0, a1) / kPi;
+            out[j].updSin(k) += Q.timesHarmonic(k, true).integrate(a0, a1) / kPi;
         }
     }
 }
@@ -173,6 +173,9 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
             double lo = ta, hi = tb;
             for (int it = 0; it < 60; ++it) {
                 const double mid = 0.5 * (lo + hi);
+                // Once mid is lo or hi (adjacent doubles), every further step reassigns
+                // the same value: stopping changes nothing.
+                if (mid == lo || mid == hi) break;
                 ((d.evaluate(mid) - dSlip) * side0 > 0 ? lo : hi) = mid;
             }
             tSlip = 0.5 * (lo + hi);

@@ -116,6 +116,31 @@ TrigSeries operator*(const TrigSeries& a, const TrigSeries& b) {
     return p;
 }
 
+TrigSeries TrigSeries::timesHarmonic(int k, bool sine) const {
+    // operator*(*this, cosine(k)) has b_c = 1, b_s = 0 at n = k and zeros elsewhere
+    // (sine(k): b_c = 0, b_s = 1); the terms of the other n add only zeros.
+    TrigSeries p(getDegree() + k);
+    auto addCos = [&p](int j, double v) { (j == 0 ? p.c_[0] : p.c_[2 * std::abs(j) - 1]) += v; };
+    auto addSin = [&p](int j, double v) {
+        if (j != 0) p.c_[2 * std::abs(j)] += (j > 0 ? v : -v);
+    };
+    for (int m = 0; m <= getDegree(); ++m) {
+        const double ac = m == 0 ? c_[0] : c_[2 * m - 1], as = m == 0 ? 0.0 : c_[2 * m];
+        if (!sine) {
+            addCos(m - k, 0.5 * ac);
+            addCos(m + k, 0.5 * ac);
+            addSin(m + k, 0.5 * as);
+            addSin(m - k, 0.5 * as);
+        } else {
+            addCos(m - k, 0.5 * as);
+            addCos(m + k, 0.5 * -as);
+            addSin(m + k, 0.5 * ac);
+            addSin(m - k, 0.5 * -ac);
+        }
+    }
+    return p;
+}
+
 std::vector<double> TrigSeries::findRoots(double level) const {
     // s(τ) − level = Σ_{k=−N..N} γ_k e^{ikτ}, γ₀ = c₀ − level, γ_{±k} = (a_k ∓ i b_k)/2.
     // With z = e^{iτ}, z^N·(s − level) is a polynomial of degree 2N whose roots

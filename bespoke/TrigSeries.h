@@ -60,6 +60,9 @@ public:
     friend TrigSeries operator*(TrigSeries a, double x) { return a *= x; }
     friend TrigSeries operator*(double x, TrigSeries a) { return a *= x; }
     friend TrigSeries operator*(const TrigSeries& a, const TrigSeries& b);
+    /// *this · cos kτ or *this · sin kτ (k ≥ 1): operator* with cosine(k) / sine(k),
+    /// the same sums in the same order without the products by zero.
+    TrigSeries timesHarmonic(int k, bool sine) const;
 
 private:
     static int checkedSize(int degree);
