@@ -43,35 +43,46 @@ PiecewiseLinearLaw makeCompressionOnly(double stiffness, double clearance) {
 
 double criticalDamping(double k, double m, double zeta) { return 2 * zeta * std::sqrt(k * m); }
 
+using VectorFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+/// A forward-difference Jacobian, column i with the step 1e-6·max(1, |x_i|) (see
+/// calcForwardJacobian); a model may compute the same columns faster.
+using JacobianFunction = std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>;
+
+/// Forward differences with a step of 1e-6 of max(1, |x_i|) in the scaled
+/// unknowns: MINPACK's own step (relative to |x_i|) collapses on harmonics
+/// that are exactly zero and then sees only round-off in the switching times.
+Eigen::MatrixXd calcJacobian(const VectorFunction& f, const Eigen::VectorXd& x, int rows) {
+    Eigen::MatrixXd J(rows, x.size());
+    const Eigen::VectorXd f0 = f(x);
+    for (int i = 0; i < x.size(); ++i) {
+        Eigen::VectorXd xp = x;
+        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+        xp[i] += h;
+        J.col(i) = (f(xp) - f0) / h;
+    }
+    return J;
+}
+
 /// Eigen's HybridNonLinearSolver functor around any residual function.
 struct ResidualFunctor {
-    std::function<Eigen::VectorXd(const Eigen::VectorXd&)> f;
+    VectorFunction f;
     int n = 0;
+    JacobianFunction jacobian;  ///< the same forward differences, faster; empty: calcJacobian
     int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) const {
         fvec = f(x);
         return 0;
     }
-    /// Forward differences with a step of 1e-6 of max(1, |x_i|) in the scaled
-    /// unknowns: MINPACK's own step (relative to |x_i|) collapses on harmonics
-    /// that are exactly zero and then sees only round-off in the switching times.
     int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
-        const Eigen::VectorXd f0 = f(x);
-        jac.resize(f0.size(), x.size());
-        for (int i = 0; i < x.size(); ++i) {
-            Eigen::VectorXd xp = x;
-            const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
-            xp[i] += h;
-            jac.col(i) = (f(xp) - f0) / h;
-        }
+        jac = jacobian ? jacobian(x) : calcJacobian(f, x, n);
         return 0;
     }
     int inputs() const { return n; }
     int values() const { return n; }
 };
 
-std::optional<Eigen::VectorXd> solvePowell(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
-                                           Eigen::VectorXd x, double tolerance, int* evaluations = nullptr) {
-    ResidualFunctor functor{f, int(x.size())};
+std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, Eigen::VectorXd x, double tolerance,
+                                           int* evaluations = nullptr, const JacobianFunction& jacobian = {}) {
+    ResidualFunctor functor{f, int(x.size()), jacobian};
     Eigen::HybridNonLinearSolver<ResidualFunctor> solver(functor);
     solver.parameters.maxfev = 200;
     solver.parameters.xtol = 1e-12;
@@ -82,19 +93,6 @@ std::optional<Eigen::VectorXd> solvePowell(const std::function<Eigen::VectorXd(c
     const Eigen::VectorXd r = f(x);
     if (!r.allFinite() || r.norm() > tolerance) return std::nullopt;
     return x;
-}
-
-Eigen::MatrixXd calcJacobian(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f, const Eigen::VectorXd& x,
-                             int rows) {
-    Eigen::MatrixXd J(rows, x.size());
-    const Eigen::VectorXd f0 = f(x);
-    for (int i = 0; i < x.size(); ++i) {
-        Eigen::VectorXd xp = x;
-        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
-        xp[i] += h;
-        J.col(i) = (f(xp) - f0) / h;
-    }
-    return J;
 }
 }  // namespace
 
@@ -173,10 +171,24 @@ TrigSeries DescribingFunctionModel::calcRelative(const std::vector<TrigSeries>& 
     return a + b * -1.0;
 }
 
-Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, double speedMph) const {
+std::vector<TrigSeries> DescribingFunctionModel::calcElementHarmonics(const std::vector<TrigSeries>& q, const Element& e,
+                                                                      double omega) const {
+    const TrigSeries d = calcRelative(q, e);
+    std::vector<TrigSeries> weights{TrigSeries::constant(1), q[3 * e.bodyA]};
+    if (e.bodyB >= 0) weights.push_back(q[3 * e.bodyB]);
+    return std::visit([&](const auto& law) { return calcForceHarmonics(law, d, omega, weights, kHarmonics); }, e.law);
+}
+
+bool DescribingFunctionModel::movesElement(int unknown, const Element& e) {
+    const int dof = unknown / kCoefficients, body = dof / 3, coordinate = dof % 3;  // 0 roll, 1 y, 2 z
+    // The element reads its bodies' rolls (arms and weights) and the coordinate along its axis.
+    return (e.bodyA == body || e.bodyB == body) && (coordinate == 0 || coordinate == e.axis);
+}
+
+Eigen::VectorXd DescribingFunctionModel::assembleResidual(const std::vector<TrigSeries>& q,
+                                                          const std::vector<std::vector<TrigSeries>>& harmonics,
+                                                          double omega) const {
     using M = EomHalfCarModel;
-    const double omega = calcOmega(speedMph);
-    const std::vector<TrigSeries> q = getPositions(x);
     std::vector<TrigSeries> Q(M::kNumDofs, TrigSeries(kHarmonics));
     for (int b = 0; b < M::kNumBodies; ++b) Q[3 * b + 2].updMean() -= reference_.getMass(b) * units::g;
 
@@ -187,12 +199,9 @@ Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, 
         if (axis == kAxisZ) Qth += (f * p.x() + thetaF * -p.y()) * sign;
         else Qth += (f * -p.y() + thetaF * -p.x()) * sign;
     };
-    for (const Element& e : elements_) {
-        const TrigSeries d = calcRelative(q, e);
-        std::vector<TrigSeries> weights{TrigSeries::constant(1), q[3 * e.bodyA]};
-        if (e.bodyB >= 0) weights.push_back(q[3 * e.bodyB]);
-        const std::vector<TrigSeries> H = std::visit(
-            [&](const auto& law) { return calcForceHarmonics(law, d, omega, weights, kHarmonics); }, e.law);
+    for (size_t i = 0; i < elements_.size(); ++i) {
+        const Element& e = elements_[i];
+        const std::vector<TrigSeries>& H = harmonics[i];
         Q[3 * e.bodyA + e.axis] += H[0];
         addMoment(Q[3 * e.bodyA], e.axis, e.pA, H[0], H[1], +1);
         if (e.bodyB >= 0) {
@@ -214,6 +223,43 @@ Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, 
     return r;
 }
 
+Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, double speedMph) const {
+    const double omega = calcOmega(speedMph);
+    const std::vector<TrigSeries> q = getPositions(x);
+    std::vector<std::vector<TrigSeries>> H(elements_.size());
+    for (size_t i = 0; i < elements_.size(); ++i) H[i] = calcElementHarmonics(q, elements_[i], omega);
+    return assembleResidual(q, H, omega);
+}
+
+Eigen::MatrixXd DescribingFunctionModel::calcResidualJacobian(const Eigen::VectorXd& x, double speedMph,
+                                                              bool speedColumn) const {
+    // calcJacobian's columns, bit for bit (same steps, same sums), but a column
+    // re-evaluates only the elements its unknown moves (about 2/5 of them).
+    const double omega = calcOmega(speedMph);
+    const std::vector<TrigSeries> q = getPositions(x);
+    std::vector<std::vector<TrigSeries>> H(elements_.size());
+    for (size_t i = 0; i < elements_.size(); ++i) H[i] = calcElementHarmonics(q, elements_[i], omega);
+    const Eigen::VectorXd f0 = assembleResidual(q, H, omega);
+    Eigen::MatrixXd J(kNumUnknowns, kNumUnknowns + (speedColumn ? 1 : 0));
+    std::vector<std::vector<TrigSeries>> Hp = H;
+    for (int i = 0; i < kNumUnknowns; ++i) {
+        Eigen::VectorXd xp = x;
+        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+        xp[i] += h;
+        const std::vector<TrigSeries> qp = getPositions(xp);
+        for (size_t k = 0; k < elements_.size(); ++k)
+            if (movesElement(i, elements_[k])) Hp[k] = calcElementHarmonics(qp, elements_[k], omega);
+        J.col(i) = (assembleResidual(qp, Hp, omega) - f0) / h;
+        for (size_t k = 0; k < elements_.size(); ++k)
+            if (movesElement(i, elements_[k])) Hp[k] = H[k];
+    }
+    if (speedColumn) {
+        const double h = 1e-6 * std::max(1.0, std::abs(speedMph));
+        J.col(kNumUnknowns) = (calcResidual(x, speedMph + h) - f0) / h;
+    }
+    return J;
+}
+
 Eigen::VectorXd DescribingFunctionModel::makeStaticGuess() const {
     const EomHalfCarModel::State y = reference_.makeStaticState();
     Eigen::VectorXd x = Eigen::VectorXd::Zero(kNumUnknowns);
@@ -228,7 +274,8 @@ Eigen::VectorXd DescribingFunctionModel::makeStaticGuess() const {
 }
 
 std::optional<Eigen::VectorXd> DescribingFunctionModel::solve(double speedMph, const Eigen::VectorXd& guess) const {
-    return solvePowell([&](const Eigen::VectorXd& x) { return calcResidual(x, speedMph); }, guess, 1e-7);
+    return solvePowell([&](const Eigen::VectorXd& x) { return calcResidual(x, speedMph); }, guess, 1e-7, nullptr,
+                       [&](const Eigen::VectorXd& x) { return calcResidualJacobian(x, speedMph, false); });
 }
 
 std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double speedMph) const {
@@ -410,8 +457,11 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
     // arclength condition t·(u − u_pred) = 0, t the unit tangent (null vector of ∂R/∂u).
     const int n = kNumUnknowns;
     auto residualOf = [this](const Eigen::VectorXd& u) { return calcResidual(u.head(kNumUnknowns), u[kNumUnknowns]); };
+    auto jacobianOf = [this](const Eigen::VectorXd& u) {  // calcJacobian(residualOf, u, n), faster
+        return calcResidualJacobian(u.head(kNumUnknowns), u[kNumUnknowns], true);
+    };
     auto tangentAt = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& previous) {
-        const Eigen::MatrixXd J = calcJacobian(residualOf, u, n);
+        const Eigen::MatrixXd J = jacobianOf(u);
         Eigen::MatrixXd A(n + 1, n + 1);
         A.topRows(n) = J;
         A.row(n) = previous.transpose();
@@ -441,7 +491,18 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
                 r[n] = t.dot(v - predicted);
                 return r;
             },
-            predicted, 1e-7, &evaluations);
+            predicted, 1e-7, &evaluations, [&](const Eigen::VectorXd& v) {
+                Eigen::MatrixXd J(n + 1, n + 1);
+                J.topRows(n) = jacobianOf(v);
+                const double c0 = t.dot(v - predicted);
+                for (int i = 0; i <= n; ++i) {  // the arclength row by the same differences
+                    Eigen::VectorXd vp = v;
+                    const double h = 1e-6 * std::max(1.0, std::abs(v[i]));
+                    vp[i] += h;
+                    J(n, i) = (t.dot(vp - predicted) - c0) / h;
+                }
+                return J;
+            });
         if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
             ds *= 0.5;
             if (ds < s.minStep) break;

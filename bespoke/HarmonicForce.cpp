@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 namespace rockroll {
 
@@ -14,26 +15,44 @@ int findSegment(const std::vector<double>& breakpoints, double d) {
     return int(std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin());
 }
 
+int getMaxDegree(const std::vector<TrigSeries>& weights) {
+    int n = 0;
+    for (const TrigSeries& w : weights) n = std::max(n, w.getDegree());
+    return n;
+}
+
+/// Adds ∫ Q·{1, cos kτ, sin kτ} over [a0.tau, a1.tau] (normalized) to `out`,
+/// Q = g·w_j for each weight (the angles at both ends computed once).
+void addPiece(const TrigSeries& g, const TrigSeries::Angles& a0, const TrigSeries::Angles& a1, int harmonics,
+              const std::vector<TrigSeries>& weights, std::vector<TrigSeries>& out) {
+    for (size_t j = 0; j < weights.size(); ++j) {
+        const TrigSeries Q = g * weights[j];
+        out[j].updMean() += Q.integrate(a0, a1) / (2 * kPi);
+        for (int k = 1; k <= harmonics; ++k) {
+            out[j].updCos(k) += Q.timesHarmonic(k, false).integrate(a0, a1) / kPi;
+            out[j].updSin(k) += Q.timesHarmonic(k, true).integrate(a0, a1) / kPi;
+        }
+    }
+}
+
 /// Integrates Q_j(τ)·{1, cos kτ, sin kτ} over [0, 2π) split at `cuts`, with
-/// Q_j = g(midpoint)·w_j on each piece.
+/// Q_j = g(midpoint)·w_j on each piece; `forceDegree` bounds the degree of g.
+template <class LawOn>
 std::vector<TrigSeries> integratePiecewise(std::vector<double> cuts, int harmonics, const std::vector<TrigSeries>& weights,
-                                           const std::function<TrigSeries(double mid)>& lawOn) {
+                                           int forceDegree, const LawOn& lawOn) {
     cuts.push_back(0);
     cuts.push_back(2 * kPi);
     std::sort(cuts.begin(), cuts.end());
+    const int degree = std::min(TrigSeries::kMaxDegree, forceDegree + getMaxDegree(weights) + harmonics);
     std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
+    TrigSeries::Angles a0(cuts[0], degree);
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double t0 = cuts[i], t1 = cuts[i + 1];
         if (t1 - t0 <= 0) continue;
-        const TrigSeries g = lawOn(0.5 * (t0 + t1));
-        for (size_t j = 0; j < weights.size(); ++j) {
-            const TrigSeries Q = g * weights[j];
-            out[j].updMean() += Q.integrate(t0, t1) / (2 * kPi);
-            for (int k = 1; k <= harmonics; ++k) {
-                out[j].updCos(k) += (Q * TrigSeries::cosine(k)).integrate(t0, t1) / kPi;
-                out[j].updSin(k) += (Q * TrigSeries::sine(k)).integrate(t0, t1) / kPi;
-            }
-        }
+        if (a0.tau != t0) a0 = TrigSeries::Angles(t0, degree);
+        const TrigSeries::Angles a1(t1, degree);
+        addPiece(lawOn(0.5 * (t0 + t1)), a0, a1, harmonics, weights, out);
+        a0 = a1;
     }
     return out;
 }
@@ -41,16 +60,16 @@ std::vector<TrigSeries> integratePiecewise(std::vector<double> cuts, int harmoni
 std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, int harmonics,
                                         const std::vector<TrigSeries>& weights) {
     std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
+    int forceDegree = 0;
+    for (const ForcePiece& p : pieces) forceDegree = std::max(forceDegree, p.force.getDegree());
+    const int degree = std::min(TrigSeries::kMaxDegree, forceDegree + getMaxDegree(weights) + harmonics);
+    std::optional<TrigSeries::Angles> a0;
     for (const ForcePiece& p : pieces) {
         if (p.t1 - p.t0 <= 0) continue;
-        for (size_t j = 0; j < weights.size(); ++j) {
-            const TrigSeries Q = p.force * weights[j];
-            out[j].updMean() += Q.integrate(p.t0, p.t1) / (2 * kPi);
-            for (int k = 1; k <= harmonics; ++k) {
-                out[j].updCos(k) += (Q * TrigSeries::cosine(k)).integrate(p.t0, p.t1) / kPi;
-                out[j].updSin(k) += (Q * TrigSeries::sine(k)).integrate(p.t0, p.t1) / kPi;
-            }
-        }
+        if (!a0 || a0->tau != p.t0) a0.emplace(p.t0, degree);
+        const TrigSeries::Angles a1(p.t1, degree);
+        addPiece(p.force, *a0, a1, harmonics, weights, out);
+        a0 = a1;
     }
     return out;
 }
@@ -81,7 +100,7 @@ std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const 
     for (double b : law.breakpoints)
         for (double r : d.findRoots(b)) cuts.push_back(r);
     const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(cuts, harmonics, weights, [&](double mid) {
+    return integratePiecewise(cuts, harmonics, weights, d.getDegree(), [&](double mid) {
         const int i = findSegment(law.breakpoints, d.evaluate(mid));
         return TrigSeries::constant(law.alpha[i]) + d * law.beta[i] + rate * law.viscous;
     });
@@ -90,7 +109,7 @@ std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const 
 std::vector<TrigSeries> calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega,
                                            const std::vector<TrigSeries>& weights, int harmonics) {
     const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(rate.findRoots(0), harmonics, weights,
+    return integratePiecewise(rate.findRoots(0), harmonics, weights, 0,
                               [&](double mid) { return TrigSeries::constant(law.evaluate(rate.evaluate(mid))); });
 }
 
@@ -154,6 +173,9 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
             double lo = ta, hi = tb;
             for (int it = 0; it < 60; ++it) {
                 const double mid = 0.5 * (lo + hi);
+                // Once mid is lo or hi (adjacent doubles), every further step reassigns
+                // the same value: stopping changes nothing.
+                if (mid == lo || mid == hi) break;
                 ((d.evaluate(mid) - dSlip) * side0 > 0 ? lo : hi) = mid;
             }
             tSlip = 0.5 * (lo + hi);

@@ -22,6 +22,7 @@ ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunc
         truck_.bolsterWeight = car.bolsterWeight;
         truck_.wheelsetWeight = 2 * (car.wheelsetWeight + car.sideFrameWeight);
     }
+    modeCache_ = std::make_shared<const TruckModeCache>(truck_);
     mass_ = car.getCarBodyWeight() / 2 / units::g;
     inertia_ = car.rollInertia / 2;
     staticZ_ = makeStaticState()[2];
@@ -64,7 +65,7 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const
 
 ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem) const {
     Evaluation e;
-    e.truck = findTruckEquilibrium(truck_, makeTruckInputs(t, y, mem), mem.mode);
+    e.truck = findTruckEquilibrium(makeTruckInputs(t, y, mem), mem.mode, *modeCache_);
     const double pin = e.truck.pinForce;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     double Fz = -mass_ * units::g, M = h * pin;

@@ -20,6 +20,7 @@
 #include "mbmodel/TimeHistory.h"
 
 #include <Eigen/Dense>
+#include <memory>
 
 namespace rockroll {
 
@@ -80,6 +81,7 @@ private:
     CarParameters car_;
     RailStateFunction rails_;
     TruckGeometry truck_;
+    std::shared_ptr<const TruckModeCache> modeCache_;  // per-mode factorizations (shared by copies)
     double mass_ = 0, inertia_ = 0, staticZ_ = 0;
     ChannelLayout channels_;
 };

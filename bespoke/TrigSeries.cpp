@@ -5,6 +5,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace rockroll {
 
@@ -25,8 +27,20 @@ TrigSeries TrigSeries::sine(int k, double amplitude) {
     return s;
 }
 
+int TrigSeries::checkedSize(int degree) {
+    if (degree < 0 || degree > kMaxDegree)
+        throw std::length_error("TrigSeries: degree " + std::to_string(degree) + " above the maximum " +
+                                std::to_string(kMaxDegree));
+    return 2 * degree + 1;
+}
+
 void TrigSeries::grow(int degree) {
-    if (degree > getDegree()) c_.resize(2 * degree + 1, 0.0);
+    if (degree > getDegree()) size_ = checkedSize(degree);  // coefficients past size_ are zero
+}
+
+TrigSeries::Angles::Angles(double t, int n) : tau(t), degree(std::min(n, kMaxDegree)) {
+    sin[0] = 0, cos[0] = 1;
+    for (int k = 1; k <= degree; ++k) sin[k] = std::sin(k * t), cos[k] = std::cos(k * t);
 }
 
 double& TrigSeries::updCos(int k) {
@@ -62,14 +76,22 @@ double TrigSeries::integrate(double t0, double t1) const {
     return v;
 }
 
+double TrigSeries::integrate(const Angles& a0, const Angles& a1) const {
+    if (getDegree() > std::min(a0.degree, a1.degree)) throw std::logic_error("TrigSeries::integrate: angles of too low a degree");
+    double v = c_[0] * (a1.tau - a0.tau);
+    for (int k = 1; k <= getDegree(); ++k)
+        v += (c_[2 * k - 1] * (a1.sin[k] - a0.sin[k]) - c_[2 * k] * (a1.cos[k] - a0.cos[k])) / k;
+    return v;
+}
+
 TrigSeries& TrigSeries::operator+=(const TrigSeries& o) {
     grow(o.getDegree());
-    for (size_t i = 0; i < o.c_.size(); ++i) c_[i] += o.c_[i];
+    for (int i = 0; i < o.size_; ++i) c_[i] += o.c_[i];
     return *this;
 }
 
 TrigSeries& TrigSeries::operator*=(double x) {
-    for (double& c : c_) c *= x;
+    for (int i = 0; i < size_; ++i) c_[i] *= x;
     return *this;
 }
 
@@ -94,28 +116,55 @@ TrigSeries operator*(const TrigSeries& a, const TrigSeries& b) {
     return p;
 }
 
+TrigSeries TrigSeries::timesHarmonic(int k, bool sine) const {
+    // operator*(*this, cosine(k)) has b_c = 1, b_s = 0 at n = k and zeros elsewhere
+    // (sine(k): b_c = 0, b_s = 1); the terms of the other n add only zeros.
+    TrigSeries p(getDegree() + k);
+    auto addCos = [&p](int j, double v) { (j == 0 ? p.c_[0] : p.c_[2 * std::abs(j) - 1]) += v; };
+    auto addSin = [&p](int j, double v) {
+        if (j != 0) p.c_[2 * std::abs(j)] += (j > 0 ? v : -v);
+    };
+    for (int m = 0; m <= getDegree(); ++m) {
+        const double ac = m == 0 ? c_[0] : c_[2 * m - 1], as = m == 0 ? 0.0 : c_[2 * m];
+        if (!sine) {
+            addCos(m - k, 0.5 * ac);
+            addCos(m + k, 0.5 * ac);
+            addSin(m + k, 0.5 * as);
+            addSin(m - k, 0.5 * as);
+        } else {
+            addCos(m - k, 0.5 * as);
+            addCos(m + k, 0.5 * -as);
+            addSin(m + k, 0.5 * ac);
+            addSin(m - k, 0.5 * -ac);
+        }
+    }
+    return p;
+}
+
 std::vector<double> TrigSeries::findRoots(double level) const {
     // s(τ) − level = Σ_{k=−N..N} γ_k e^{ikτ}, γ₀ = c₀ − level, γ_{±k} = (a_k ∓ i b_k)/2.
     // With z = e^{iτ}, z^N·(s − level) is a polynomial of degree 2N whose roots
     // on the unit circle are the crossings; its companion matrix gives them all.
     double scale = std::abs(c_[0] - level);
-    for (size_t i = 1; i < c_.size(); ++i) scale = std::max(scale, std::abs(c_[i]));
+    for (int i = 1; i < size_; ++i) scale = std::max(scale, std::abs(c_[i]));
     if (scale == 0) return {};
     int N = getDegree();
     while (N > 0 && std::hypot(c_[2 * N - 1], c_[2 * N]) < 1e-14 * scale) --N;
     if (N == 0) return {};
     using C = std::complex<double>;
-    std::vector<C> p(2 * N + 1);  // p[j] multiplies z^j
+    std::array<C, 2 * kMaxDegree + 1> p{};  // p[j] multiplies z^j
     p[N] = c_[0] - level;
     for (int k = 1; k <= N; ++k) {
         p[N + k] = C(c_[2 * k - 1], -c_[2 * k]) / 2.0;
         p[N - k] = C(c_[2 * k - 1], c_[2 * k]) / 2.0;
     }
     const int deg = 2 * N;
-    Eigen::MatrixXcd companion = Eigen::MatrixXcd::Zero(deg, deg);
+    // Fixed maximum size: the eigen-solve allocates nothing.
+    using Companion = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic, 0, 2 * kMaxDegree, 2 * kMaxDegree>;
+    Companion companion = Companion::Zero(deg, deg);
     for (int i = 1; i < deg; ++i) companion(i, i - 1) = 1;
     for (int i = 0; i < deg; ++i) companion(i, deg - 1) = -p[i] / p[deg];
-    const Eigen::VectorXcd z = Eigen::ComplexEigenSolver<Eigen::MatrixXcd>(companion, false).eigenvalues();
+    const auto z = Eigen::ComplexEigenSolver<Companion>(companion, false).eigenvalues();
 
     const TrigSeries ds = derivative();
     std::vector<double> roots;

@@ -3,6 +3,8 @@
 #include "contacts/SpringGroupLaws.h"
 
 #include <algorithm>
+#include <atomic>
+#include <memory>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -87,61 +89,16 @@ Linear makeSpringForce(const TruckGeometry& g, const Linear& Z, SpringSegment se
     }
     return P;
 }
-}  // namespace
-
-std::string TruckMode::describe() const {
-    static const char* support[] = {"center plate two-point", "corner L", "corner R", "side bearing L + corner L",
-                                    "side bearing R + corner R", "side bearing L", "side bearing R", "no contact"};
-    static const char* wheels[] = {"both wheels", "left wheel lifted", "right wheel lifted"};
-    static const char* wedge[] = {"stick", "slip up", "slip down"};
-    static const char* spring[] = {"free", "linear", "bottomed"};
-    static const char* gibs[] = {"gibs open", "gib +", "gib −"};
-    return fmt::format("{}, {}, wedges {}/{}, springs {}/{}, lateral wedges {}, {}", support[int(this->support)],
-                       wheels[int(this->wheels)], wedge[int(this->wedge[0])], wedge[int(this->wedge[1])],
-                       spring[int(this->spring[0])], spring[int(this->spring[1])], wedge[int(lateralWedge)],
-                       gibs[int(gib)]);
-}
-
-std::vector<TruckMode> enumerateTruckModes() {
-    std::vector<TruckMode> modes;
-    for (int s = 0; s < 8; ++s)
-        for (int w = 0; w < 3; ++w)
-            for (int sp = 0; sp < 9; ++sp)
-                for (int f = 0; f < 9; ++f) {
-                    TruckMode m;
-                    m.support = CarBodySupport(s);
-                    m.wheels = WheelContact(w);
-                    m.spring = {SpringSegment((sp / 3 + 1) % 3), SpringSegment((sp % 3 + 1) % 3)};  // linear first
-                    m.wedge = {WedgeState(f / 3), WedgeState(f % 3)};
-                    for (int lat = 0; lat < 9; ++lat) {
-                        m.lateralWedge = WedgeState(lat / 3);
-                        m.gib = GibContact(lat % 3);
-                        modes.push_back(m);
-                    }
-                }
-    return modes;
-}
-
-TruckGeometry::TruckGeometry(const CarParameters& car)
-    : a_c(car.centerPlateDiameter / 2), a_s(car.sideBearingOffset), l_s(car.springOffset), halfGauge(car.gauge / 2),
-      cpAboveSprings(car.centerPlateAboveSprings), sbAboveSprings(car.sideBearingAboveSprings),
-      springTopAboveRail(car.springTopAboveRail), wheelRadius(car.wheelRadius), clearance(car.sideBearingClearance),
-      Kv(car.springVerticalRate), travel(car.springTravel), Kb(car.bottomingRate), Fv(car.verticalFriction),
-      kBristle(car.verticalFriction / car.frictionBristleDeflection), Kh(car.springLateralRate),
-      gibClearance(car.gibClearance), Kgib(car.gibRate), Fh(car.lateralFriction),
-      kBristleLateral(car.lateralFriction / car.frictionBristleDeflection),
-      kPin(car.contactStiffnessScale * car.centerPinStiffness) {}
-
-TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
-    const Kinematics k = makeKinematics(g, in);
-    std::array<Linear, 2> P, load;  // spring force; spring + friction on the bolster
+/// The mode's 15 equations A·x = b (x unscaled: m, rad, N).
+void assembleSystem(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
+                    const std::array<Linear, 2>& P, Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, N, 1>& b) {
+    std::array<Linear, 2> load;  // spring + friction on the bolster
     for (int i : {0, 1}) {
-        P[i] = makeSpringForce(g, k.compression[i], mode.spring[i]);
         load[i] = P[i];
         load[i].row[i == 0 ? PHIL : PHIR] += 1;
     }
-    Eigen::Matrix<double, N, N> A = Eigen::Matrix<double, N, N>::Zero();
-    Eigen::Matrix<double, N, 1> b = Eigen::Matrix<double, N, 1>::Zero();
+    A.setZero();
+    b.setZero();
     auto set = [&](int eq, const Linear& lhs, double rhs) {
         A.row(eq) = lhs.row;
         b[eq] = rhs - lhs.c;
@@ -219,25 +176,108 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
         case WedgeState::SlipDown: set(10 + i, unknown(PHIL + i), g.Fv); break;
         }
     }
+}
 
-    TruckSolution sol;
-    sol.mode = mode;
+/// b of assembleSystem alone, the same expressions in the same order (bit-identical:
+/// test ReducedModel.CachedModeSolveIsBitIdenticalToTheDirectSolve); A is cached per mode.
+void assembleRhs(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
+                 const std::array<Linear, 2>& P, Eigen::Matrix<double, N, 1>& b) {
+    const double load0 = P[0].c, load1 = P[1].c;  // the friction unknowns add no constant
+    b[0] = 0 - (load0 + load1 - g.bolsterWeight);
+    b[1] = 0 - g.l_s * (load0 - load1);
+    b[2] = 0 - (-(load0 + load1) - g.wheelsetWeight);
+    b[3] = 0 - -g.l_s * (load0 - load1);
+    b[12] = -g.kPin * in.plateY - 0.0;
+    const double gibSign = mode.gib == GibContact::Positive ? 1 : (mode.gib == GibContact::Negative ? -1 : 0);
+    const double kLat = 2 * (g.Kh + (gibSign != 0 ? g.Kgib : 0));
+    b[13] = 0 - (-kLat * k.lateral.c + 2 * g.Kgib * gibSign * g.gibClearance);
+    switch (mode.lateralWedge) {
+    case WedgeState::Stick:
+        b[14] = -2 * g.kBristleLateral * in.lateralAnchor - -2 * g.kBristleLateral * k.lateral.c;
+        break;
+    case WedgeState::SlipUp: b[14] = 2 * g.Fh - 0.0; break;
+    case WedgeState::SlipDown: b[14] = -2 * g.Fh - 0.0; break;
+    }
+    for (int i : {0, 1}) {
+        b[4 + i] = closesRim(mode.support, i) ? 0 - k.rimGap[i].c : 0 - 0.0;
+        b[6 + i] = closesSideBearing(mode.support, i) ? 0 - k.padGap[i].c : 0 - 0.0;
+        b[8 + i] = liftsWheel(mode.wheels, i) ? 0 - 0.0 : 0 - k.treadLift[i].c;
+        switch (mode.wedge[i]) {
+        case WedgeState::Stick: b[10 + i] = -g.kBristle * in.wedgeAnchor[i] - -g.kBristle * k.compression[i].c; break;
+        case WedgeState::SlipUp: b[10 + i] = -g.Fv - 0.0; break;
+        case WedgeState::SlipDown: b[10 + i] = g.Fv - 0.0; break;
+        }
+    }
+}
+
+/// The scaled, row-equilibrated matrix's factorization: a function of the mode and
+/// the geometry only (the inputs enter b alone), so TruckModeCache keeps one per mode.
+struct ModeFactor {
+    Eigen::Matrix<double, N, N, Eigen::RowMajor> lu;  ///< FullPivLU's L (unit lower) and U, rows contiguous
+    std::array<int, N> p{}, q{};                      ///< its row and column permutations
+    Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
+    bool invertible = false;
+
+    /// FullPivLU::solve's steps (x = Q·U⁻¹·L⁻¹·P·b) by plain substitution: Eigen's
+    /// blocked triangular solves cost ~1 µs at this size, the loops ~0.1 µs. Same
+    /// factors; only the rounding of the sums differs.
+    Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b) const {
+        double c[N];
+        for (int i = 0; i < N; ++i) c[p[i]] = b[i];
+        for (int i = 1; i < N; ++i) {
+            double v = c[i];
+            for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
+            c[i] = v;
+        }
+        for (int i = N - 1; i >= 0; --i) {
+            double v = c[i];
+            for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
+            c[i] = v / lu(i, i);
+        }
+        Eigen::Matrix<double, N, 1> x;
+        for (int i = 0; i < N; ++i) x[q[i]] = c[i];
+        return x;
+    }
+};
+
+const Eigen::Matrix<double, N, 1>& getColumnScale() {
+    // Unknowns in mm, mrad and 10 kN.
+    static const Eigen::Matrix<double, N, 1> colScale = [] {
+        Eigen::Matrix<double, N, 1> c;
+        c << 1e-3, 1e-3, 1e-3, 1e-3, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e-3, 1e4, 1e4;
+        return c;
+    }();
+    return colScale;
+}
+
+void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
     // Equilibrate: unknowns in mm, mrad and 10 kN, then every row to unit max,
     // so the rank test compares like with like (spring rows carry 1e7 N/m).
-    Eigen::Matrix<double, N, 1> colScale;
-    colScale << 1e-3, 1e-3, 1e-3, 1e-3, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e4, 1e-3, 1e4, 1e4;
-    Eigen::Matrix<double, N, N> As = A * colScale.asDiagonal();
-    Eigen::Matrix<double, N, 1> bs = b;
+    Eigen::Matrix<double, N, N> As = A * getColumnScale().asDiagonal();
     for (int r = 0; r < N; ++r) {
         const double m = As.row(r).cwiseAbs().maxCoeff();
-        if (m > 0) As.row(r) /= m, bs[r] /= m;
+        f.rowScale[r] = m;
+        if (m > 0) As.row(r) /= m;
     }
     const Eigen::FullPivLU<Eigen::Matrix<double, N, N>> lu(As);
-    if (!lu.isInvertible()) {
+    f.invertible = lu.isInvertible();
+    f.lu = lu.matrixLU();
+    for (int i = 0; i < N; ++i) f.p[i] = int(lu.permutationP().indices()[i]), f.q[i] = int(lu.permutationQ().indices()[i]);
+}
+
+/// Solves with the factorization and checks every inequality of the mode.
+TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
+                            const std::array<Linear, 2>& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
+    TruckSolution sol;
+    sol.mode = mode;
+    if (!f.invertible) {
         sol.violation = 1e300;
         return sol;
     }
-    const Eigen::Matrix<double, N, 1> x = colScale.asDiagonal() * lu.solve(bs);
+    Eigen::Matrix<double, N, 1> bs = b;
+    for (int r = 0; r < N; ++r)
+        if (f.rowScale[r] > 0) bs[r] /= f.rowScale[r];
+    const Eigen::Matrix<double, N, 1> x = getColumnScale().asDiagonal() * f.solve(bs);
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
     sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
     sol.lateral = k.lateral.evaluate(x);
@@ -290,13 +330,129 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     return sol;
 }
 
-std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
-    std::vector<TruckMode> out;
+
+}  // namespace
+
+std::string TruckMode::describe() const {
+    static const char* support[] = {"center plate two-point", "corner L", "corner R", "side bearing L + corner L",
+                                    "side bearing R + corner R", "side bearing L", "side bearing R", "no contact"};
+    static const char* wheels[] = {"both wheels", "left wheel lifted", "right wheel lifted"};
+    static const char* wedge[] = {"stick", "slip up", "slip down"};
+    static const char* spring[] = {"free", "linear", "bottomed"};
+    static const char* gibs[] = {"gibs open", "gib +", "gib −"};
+    return fmt::format("{}, {}, wedges {}/{}, springs {}/{}, lateral wedges {}, {}", support[int(this->support)],
+                       wheels[int(this->wheels)], wedge[int(this->wedge[0])], wedge[int(this->wedge[1])],
+                       spring[int(this->spring[0])], spring[int(this->spring[1])], wedge[int(lateralWedge)],
+                       gibs[int(gib)]);
+}
+
+std::vector<TruckMode> enumerateTruckModes() {
+    std::vector<TruckMode> modes;
+    for (int s = 0; s < 8; ++s)
+        for (int w = 0; w < 3; ++w)
+            for (int sp = 0; sp < 9; ++sp)
+                for (int f = 0; f < 9; ++f) {
+                    TruckMode m;
+                    m.support = CarBodySupport(s);
+                    m.wheels = WheelContact(w);
+                    m.spring = {SpringSegment((sp / 3 + 1) % 3), SpringSegment((sp % 3 + 1) % 3)};  // linear first
+                    m.wedge = {WedgeState(f / 3), WedgeState(f % 3)};
+                    for (int lat = 0; lat < 9; ++lat) {
+                        m.lateralWedge = WedgeState(lat / 3);
+                        m.gib = GibContact(lat % 3);
+                        modes.push_back(m);
+                    }
+                }
+    return modes;
+}
+
+TruckGeometry::TruckGeometry(const CarParameters& car)
+    : a_c(car.centerPlateDiameter / 2), a_s(car.sideBearingOffset), l_s(car.springOffset), halfGauge(car.gauge / 2),
+      cpAboveSprings(car.centerPlateAboveSprings), sbAboveSprings(car.sideBearingAboveSprings),
+      springTopAboveRail(car.springTopAboveRail), wheelRadius(car.wheelRadius), clearance(car.sideBearingClearance),
+      Kv(car.springVerticalRate), travel(car.springTravel), Kb(car.bottomingRate), Fv(car.verticalFriction),
+      kBristle(car.verticalFriction / car.frictionBristleDeflection), Kh(car.springLateralRate),
+      gibClearance(car.gibClearance), Kgib(car.gibRate), Fh(car.lateralFriction),
+      kBristleLateral(car.lateralFriction / car.frictionBristleDeflection),
+      kPin(car.contactStiffnessScale * car.centerPinStiffness) {}
+
+TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
+    const Kinematics k = makeKinematics(g, in);
+    std::array<Linear, 2> P;
+    for (int i : {0, 1}) P[i] = makeSpringForce(g, k.compression[i], mode.spring[i]);
+    Eigen::Matrix<double, N, N> A;
+    Eigen::Matrix<double, N, 1> b;
+    assembleSystem(g, in, mode, k, P, A, b);
+    ModeFactor f;
+    factorSystem(A, f);
+    return solveFactored(g, in, mode, k, P, f, b);
+}
+
+// ---- TruckModeCache -------------------------------------------------------
+
+struct TruckModeCache::Factor : ModeFactor {};
+
+TruckModeCache::TruckModeCache(const TruckGeometry& g) : geometry_(g), slots_(kModeCount) {}
+
+TruckModeCache::~TruckModeCache() {
+    for (auto& s : slots_) delete s.load(std::memory_order_relaxed);
+}
+
+int TruckModeCache::getIndex(const TruckMode& m) {
+    const int sp = 3 * ((int(m.spring[0]) + 2) % 3) + (int(m.spring[1]) + 2) % 3;  // enumeration order: linear first
+    const int f = 3 * int(m.wedge[0]) + int(m.wedge[1]);
+    const int lat = 3 * int(m.lateralWedge) + int(m.gib);
+    return (((int(m.support) * 3 + int(m.wheels)) * 9 + sp) * 9 + f) * 9 + lat;
+}
+
+const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
+    std::atomic<Factor*>& slot = slots_[getIndex(mode)];
+    if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
+    // A depends on the mode and the geometry only; `in` only fills b, which is discarded.
+    const Kinematics k = makeKinematics(geometry_, in);
+    std::array<Linear, 2> P;
+    for (int i : {0, 1}) P[i] = makeSpringForce(geometry_, k.compression[i], mode.spring[i]);
+    Eigen::Matrix<double, N, N> A;
+    Eigen::Matrix<double, N, 1> b;
+    assembleSystem(geometry_, in, mode, k, P, A, b);
+    auto made = std::make_unique<Factor>();
+    factorSystem(A, *made);
+    Factor* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
+    return *expected;  // another thread stored the same factorization first
+}
+
+namespace {
+/// What every mode of one search shares: the kinematics and the three spring laws per side.
+struct SearchContext {
+    const TruckGeometry& g;
+    const TruckInputs& in;
+    const TruckModeCache& cache;
+    Kinematics k;
+    std::array<std::array<Linear, 3>, 2> springs;  // [side][segment]
+    SearchContext(const TruckGeometry& geometry, const TruckInputs& inputs, const TruckModeCache& c)
+        : g(geometry), in(inputs), cache(c), k(makeKinematics(geometry, inputs)) {
+        for (int i : {0, 1})
+            for (int seg = 0; seg < 3; ++seg) springs[i][seg] = makeSpringForce(g, k.compression[i], SpringSegment(seg));
+    }
+    TruckSolution solve(const TruckMode& mode) const {
+        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+        Eigen::Matrix<double, N, 1> b;
+        assembleRhs(g, in, mode, k, P, b);
+        return solveFactored(g, in, mode, k, P, cache.getFactor(mode, in), b);
+    }
+};
+
+constexpr int kMaxNeighbours = 7 + 7 * 2;
+
+/// findNeighbourModes without allocating; returns the count.
+int fillNeighbourModes(const TruckMode& m, std::array<TruckMode, kMaxNeighbours>& out) {
+    int n = 0;
     auto push = [&](auto setter, int count) {
         for (int v = 0; v < count; ++v) {
             TruckMode c = m;
             setter(c, v);
-            if (!(c == m)) out.push_back(c);
+            if (!(c == m)) out[n++] = c;
         }
     };
     push([](TruckMode& c, int v) { c.support = CarBodySupport(v); }, 8);
@@ -307,31 +463,48 @@ std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
     push([](TruckMode& c, int v) { c.spring[1] = SpringSegment(v); }, 3);
     push([](TruckMode& c, int v) { c.lateralWedge = WedgeState(v); }, 3);
     push([](TruckMode& c, int v) { c.gib = GibContact(v); }, 3);
-    return out;
+    return n;
+}
+}  // namespace
+
+std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
+    std::array<TruckMode, kMaxNeighbours> a;
+    const int n = fillNeighbourModes(m, a);
+    return std::vector<TruckMode>(a.begin(), a.begin() + n);
 }
 
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous) {
+    const TruckModeCache cache(g);
+    return findTruckEquilibrium(in, previous, cache);
+}
+
+TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache) {
     // 1. The previous mode; 2. every mode that differs from it in one choice,
     // then in two (contacts often open and close together); 3. every mode.
     // First consistent wins; else the smallest violation.
-    TruckSolution best = solveTruckMode(g, in, previous);
+    const SearchContext context(cache.getGeometry(), in, cache);
+    TruckSolution best = context.solve(previous);
     if (best.consistent) return best;
-    const std::vector<TruckMode> first = findNeighbourModes(previous);
-    for (const TruckMode& m : first) {
-        TruckSolution s = solveTruckMode(g, in, m);
+    std::array<TruckMode, kMaxNeighbours> first, second;
+    const int nFirst = fillNeighbourModes(previous, first);
+    for (int i = 0; i < nFirst; ++i) {
+        TruckSolution s = context.solve(first[i]);
         if (s.consistent) return s;
         if (s.violation < best.violation) best = s;
     }
-    for (const TruckMode& n : first)
-        for (const TruckMode& m : findNeighbourModes(n)) {
+    for (int i = 0; i < nFirst; ++i) {
+        const int nSecond = fillNeighbourModes(first[i], second);
+        for (int j = 0; j < nSecond; ++j) {
+            const TruckMode& m = second[j];
             if (m == previous) continue;
-            TruckSolution s = solveTruckMode(g, in, m);
+            TruckSolution s = context.solve(m);
             if (s.consistent) return s;
             if (s.violation < best.violation) best = s;
         }
+    }
     static const std::vector<TruckMode> modes = enumerateTruckModes();
     for (const TruckMode& m : modes) {
-        TruckSolution s = solveTruckMode(g, in, m);
+        TruckSolution s = context.solve(m);
         if (s.consistent) return s;
         if (s.violation < best.violation) best = s;
     }

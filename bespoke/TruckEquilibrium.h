@@ -46,6 +46,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -116,11 +117,34 @@ struct TruckGeometry {
 /// Returns a solution with consistent = false if the mode's system is singular.
 TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
 
+/// Per-mode factorizations of the truck's equations for one geometry. A mode's
+/// matrix depends on the mode and the geometry only (the inputs enter the right-hand
+/// side alone), so each mode is factored once, on first use, and reused: the
+/// solutions are bit-identical to solveTruckMode's. Thread-safe (lock-free slots).
+class TruckModeCache {
+public:
+    static constexpr int kModeCount = 8 * 3 * 9 * 9 * 9;
+    explicit TruckModeCache(const TruckGeometry& g);
+    ~TruckModeCache();
+    TruckModeCache(const TruckModeCache&) = delete;
+    TruckModeCache& operator=(const TruckModeCache&) = delete;
+    const TruckGeometry& getGeometry() const { return geometry_; }
+    static int getIndex(const TruckMode& m);  ///< 0 … kModeCount − 1, in enumerateTruckModes() order
+    struct Factor;
+    const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
+
+private:
+    TruckGeometry geometry_;
+    mutable std::vector<std::atomic<Factor*>> slots_;
+};
+
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
 
 /// The mode search: the previous mode, then its neighbours, then every mode;
 /// the first consistent one, or (none consistent) the one with the smallest violation.
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous);
+/// The same search with the cache's factorizations (same result, bit for bit).
+TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache);
 
 }  // namespace rockroll

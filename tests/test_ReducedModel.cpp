@@ -183,3 +183,67 @@ TEST(ReducedModel, DefaultCaseReachesSideBearingsAndWheelLift) {
     EXPECT_GT(s.maxWheelLiftIn, 0.1);
     EXPECT_GT(s.maxSideBearingLoadLb, 0.0);
 }
+
+// The mode search with cached per-mode factorizations (TruckModeCache, what the
+// model uses) returns bit for bit what the same search returns when every mode's
+// system is assembled and factored afresh (solveTruckMode): the matrix depends on
+// the mode and the geometry only, the inputs on the right-hand side alone.
+TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckGeometry& g = m.getTruckGeometry();
+    const auto modes = enumerateTruckModes();
+    for (size_t i = 0; i < modes.size(); ++i) ASSERT_EQ(TruckModeCache::getIndex(modes[i]), int(i));
+    auto direct = [&](const TruckInputs& in, const TruckMode& previous) {  // findTruckEquilibrium's order
+        TruckSolution best = solveTruckMode(g, in, previous);
+        if (best.consistent) return best;
+        std::vector<TruckMode> order = findNeighbourModes(previous);
+        for (const TruckMode& n : findNeighbourModes(previous))
+            for (const TruckMode& k : findNeighbourModes(n))
+                if (!(k == previous)) order.push_back(k);
+        order.insert(order.end(), modes.begin(), modes.end());
+        for (const TruckMode& k : order) {
+            TruckSolution s = solveTruckMode(g, in, k);
+            if (s.consistent) return s;
+            if (s.violation < best.violation) best = s;
+        }
+        return best;
+    };
+    TruckMode far;  // no contact, a wheel lifted, springs free and bottomed: forces the full enumeration
+    far.support = CarBodySupport::None, far.wheels = WheelContact::LiftLeft;
+    far.spring = {SpringSegment::Free, SpringSegment::Bottomed};
+    far.lateralWedge = WedgeState::SlipDown, far.gib = GibContact::Positive;
+    const TruckModeCache cache(g);
+    int searches = 0;
+    for (double roll : {0.0, 0.01, -0.03, 0.06})
+        for (double lateral : {0.0, 0.004}) {
+            auto y = m.makeStaticState();
+            y[0] = roll, y[1] = lateral, y[2] -= 0.005;
+            auto mem = m.makeStaticMemory();
+            TruckInputs in = m.makeTruckInputs(0.1, y, mem);
+            in.railZ = {0.004, -0.003};
+            for (const TruckMode& previous : {mem.mode, far}) {
+                const TruckSolution a = findTruckEquilibrium(in, previous, cache), b = direct(in, previous);
+                ++searches;
+                EXPECT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
+                EXPECT_EQ(a.consistent, b.consistent);
+                EXPECT_EQ(a.violation, b.violation);
+                for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster,
+                                                 &TruckSolution::zWheelset, &TruckSolution::rollWheelset,
+                                                 &TruckSolution::yBolster, &TruckSolution::pinForce,
+                                                 &TruckSolution::lateral, &TruckSolution::lateralFriction,
+                                                 &TruckSolution::lateralAnchor})
+                    EXPECT_EQ(a.*f, b.*f);
+                for (int i : {0, 1}) {
+                    EXPECT_EQ(a.rim[i], b.rim[i]);
+                    EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
+                    EXPECT_EQ(a.wheel[i], b.wheel[i]);
+                    EXPECT_EQ(a.friction[i], b.friction[i]);
+                    EXPECT_EQ(a.spring[i], b.spring[i]);
+                    EXPECT_EQ(a.compression[i], b.compression[i]);
+                    EXPECT_EQ(a.wheelLift[i], b.wheelLift[i]);
+                    EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
+                }
+            }
+        }
+    EXPECT_EQ(searches, 16);
+}
