@@ -4,6 +4,7 @@
 
 #include "bespoke/DescribingFunction.h"
 #include "mbmodel/ModalAnalysis.h"
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/SpeedSweep.h"
 #include "scenarios/ScenarioRun.h"
 
@@ -11,6 +12,7 @@
 #include <thread>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -268,13 +270,15 @@ int sweepCommand(const SweepOptions& o) {
 int modesCommand(const ModesOptions& o) {
     Scenario sc = loadScenarioFile(o.scenario);
     if (o.model) sc.model = *o.model;
-    if (sc.model != "halfcar" && sc.model != "fullcar")
-        throw ScenarioError(fmt::format("{}: modes need a Simbody model with truck masses: halfcar or fullcar, not \"{}\"",
-                                        sc.source, sc.model));
+    const ModelDescriptor& descriptor = ModelRegistry::get().getModel(sc.model);
+    if (!descriptor.isMultibody())
+        throw ScenarioError(fmt::format("{}: modes need a Simbody model with truck masses: {}, not \"{}\"", sc.source,
+                                        fmt::join(ModelRegistry::get().getMultibodyNames(), " or "), sc.model));
     TrackSpec level = sc.track;
     level.amplitude = 0;
     level.measured.clear();
-    const auto model = makeRockingModel(sc.model, makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
+    const auto model =
+        descriptor.makeMultibody(makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
     const std::vector<Mode> modes = calcModes(*model);
     const std::vector<UncoupledEstimate> table1 = calcTable1Estimates(sc.car);
     auto findEstimate = [&](const Mode& m) -> const UncoupledEstimate* {

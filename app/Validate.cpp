@@ -1,6 +1,7 @@
 // rockroll validate: regenerates results/ — the cross-validation report with its
 // CSV data and matplotlib plots. Every table and plot names the command that made it.
 #include "app/Commands.h"
+#include "scenarios/ModelRegistry.h"
 #include "app/Output.h"
 #include "app/ValidateSections.h"
 #include "bespoke/DescribingFunction.h"
@@ -562,7 +563,7 @@ std::string makeModes() {
         level.amplitude = 0;
         for (const char* model : {"halfcar", "fullcar"}) {
             if (std::string(model) == "fullcar" && std::string(carName) != "70ton-loaded") continue;
-            const auto m = makeRockingModel(model, makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
+            const auto m = ModelRegistry::get().getModel(model).makeMultibody(makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
             const auto table1 = calcTable1Estimates(sc.car);
             for (const Mode& mode : calcModes(*m)) {
                 if (mode.body != "car body") continue;

@@ -2,11 +2,13 @@
 #include "app/Commands.h"
 #include "app/Provenance.h"
 #include "mbmodel/Simulation.h"
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 int main(int argc, char** argv) {
     using namespace rockroll;
@@ -14,16 +16,19 @@ int main(int argc, char** argv) {
                  "With no sub-command: the default case, 70-ton loaded car, 0.75 in, 16.5 mph, full car, 20 s."};
     cli.require_subcommand(0, 1);
 
+    const ModelRegistry& registry = ModelRegistry::get();
+    const std::vector<std::string> modelNames = registry.getNames(), multibodyNames = registry.getMultibodyNames();
+    std::string modelHelp;
+    for (const auto& m : registry.getModels()) modelHelp += fmt::format("  {:<9} {}\n", m.name, m.description);
+
     app::RunOptions run;
     CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
     runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->check(CLI::ExistingFile);
     runCmd->add_option("--from-summary", run.fromSummary,
                        "rerun exactly the run a summary.json describes (its provenance), instead of a scenario file")
         ->check(CLI::ExistingFile);
-    runCmd->add_option("--model", run.model,
-                       "halfcar | fullcar (Simbody) | eom (hand-written equations of motion) | reduced (massless "
-                       "truck, report 2.2); overrides the scenario")
-        ->check(CLI::IsMember({"halfcar", "fullcar", "eom", "reduced"}));
+    runCmd->add_option("--model", run.model, "the model (overrides the scenario's):\n" + modelHelp)
+        ->check(CLI::IsMember(modelNames));
     runCmd->add_option("--speed-mph", run.speedMph, "speed [mph]")->check(CLI::PositiveNumber);
     runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
         ->check(CLI::NonNegativeNumber);
@@ -54,8 +59,8 @@ int main(int argc, char** argv) {
     sweepCmd->add_option("scenario", sweep.scenarios, "scenario file(s) (TOML); one sweep set per car")
         ->required()
         ->check(CLI::ExistingFile);
-    sweepCmd->add_option("--model", sweep.model, "halfcar | fullcar | eom | reduced (overrides the scenarios)")
-        ->check(CLI::IsMember({"halfcar", "fullcar", "eom", "reduced"}));
+    sweepCmd->add_option("--model", sweep.model, fmt::format("{} (overrides the scenarios)", fmt::join(modelNames, " | ")))
+        ->check(CLI::IsMember(modelNames));
     sweepCmd->add_option("--amplitude-in", sweep.amplitudesIn, "cross-level amplitude(s) A [in]")
         ->check(CLI::PositiveNumber);
     sweepCmd->add_option("--from-mph", sweep.fromMph, "lowest speed [mph]")->required()->check(CLI::PositiveNumber);
@@ -75,7 +80,8 @@ int main(int argc, char** argv) {
     CLI::App* modesCmd = cli.add_subcommand(
         "modes", "natural frequencies and damping, linearized about static equilibrium, beside the report's Table 1");
     modesCmd->add_option("scenario", modes.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
-    modesCmd->add_option("--model", modes.model, "halfcar | fullcar")->check(CLI::IsMember({"halfcar", "fullcar"}));
+    modesCmd->add_option("--model", modes.model, fmt::format("{} (the multibody models)", fmt::join(multibodyNames, " | ")))
+        ->check(CLI::IsMember(multibodyNames));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
 
     app::ValidateOptions validate;

@@ -3,6 +3,7 @@
 // with the max roll each gives, and the ratios taken in the same run.
 //
 //   build/bin/rockroll_bench [--sim-seconds=T] [google-benchmark flags]
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 
 #include "bespoke/ReducedHalfCarModel.h"
@@ -43,11 +44,8 @@ void runCase(benchmark::State& state, const std::string& model, const std::strin
     for (auto _ : state) run = runScenario(sc);
     const RunSummary& r = run.summary;
     if (!gRecorded.count(model)) {
-        ChannelLayout layout;
-        if (model == "halfcar" || model == "fullcar") layout = makeScenarioModel(sc)->getChannels();
-        else if (model == "eom") layout = makeScenarioEomModel(sc).getChannels();
-        else layout = ReducedHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), TrackMotion{sc.speed},
-                                                                              sc.car.wheelbase), sc.reduced).getChannels();
+        const ChannelLayout layout =
+            ModelRegistry::get().getModel(model).make(sc, makeTrackMotion(sc))->getChannels();
         gRecorded[model] = {run.result, layout, resolveRunLimits(sc.run.limits, sc.car)};
     }
     Measured m{r.simTimeS / r.wallTimeS, r.maxRollDeg, r.steps, r.realizations, r.wallTimeS, r.simTimeS};
@@ -87,25 +85,29 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i)
         if (std::strncmp(argv[i], "--sim-seconds=", 14) == 0) gSimSeconds = std::atof(argv[i] + 14);
     // The hand-written models on the same case: eom (CVODE BDF) and the reduced model (RK4, 5 ms).
-    for (const char* model : {"eom", "reduced"})
+    const ModelRegistry& registry = ModelRegistry::get();
+    std::vector<std::string> ownIntegrator;
+    for (const auto& d : registry.getModels())
+        if (!d.isMultibody()) ownIntegrator.push_back(d.name);
+    for (const std::string& model : ownIntegrator)
         benchmark::RegisterBenchmark(fmt::format("{}/own/acc0.0001", model).c_str(),
-                                     [m = std::string(model)](benchmark::State& s) { runCase(s, m, "own", 1e-4); })
+                                     [m = model](benchmark::State& s) { runCase(s, m, "own", 1e-4); })
             ->Iterations(1)
             ->Unit(benchmark::kSecond);
-    for (const char* model : {"halfcar", "fullcar"})
+    for (const std::string& model : registry.getMultibodyNames())
         for (const auto& [method, acc] : std::vector<std::pair<std::string, double>>{
                  {"cpodes", 1e-4}, {"cpodes", 1e-3}, {"rkmerson", 1e-4}, {"rkmerson", 1e-3}})
             benchmark::RegisterBenchmark(fmt::format("{}/{}/acc{:g}", model, method, acc).c_str(),
-                                         [m = std::string(model), method = method, acc = acc](benchmark::State& s) {
+                                         [m = model, method = method, acc = acc](benchmark::State& s) {
                                              runCase(s, m, method, acc);
                                          })
                 ->Iterations(1)
                 ->Unit(benchmark::kSecond);
-    for (const char* model : {"halfcar", "fullcar"})
+    for (const std::string& model : registry.getMultibodyNames())
         for (bool withForces : {true, false})
             benchmark::RegisterBenchmark(
                 fmt::format("realize/{}/{}", model, withForces ? "all_elements" : "elements_disabled").c_str(),
-                [m = std::string(model), withForces](benchmark::State& s) { realizeCost(s, m, withForces); });
+                [m = model, withForces](benchmark::State& s) { realizeCost(s, m, withForces); });
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
 

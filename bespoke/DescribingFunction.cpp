@@ -421,7 +421,7 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
         M::State baseNext;
         try {
             baseNext = flow(yNext);
-        } catch (const IntegrationFailure&) {
+        } catch (const NumericalFailure&) {
             break;
         }
         if ((baseNext - yNext).cwiseQuotient(step).cwiseAbs().maxCoeff() > 10 * out.mismatch) break;
@@ -530,7 +530,7 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
             // monodromy puts a few percent of noise on it (1.00–1.05 seen).
             p.stability = f.maxMultiplier < 1.1 ? Stability::Stable : Stability::Unstable;
             p.stabilityEvidence = "floquet";
-        } catch (const IntegrationFailure&) {
+        } catch (const NumericalFailure&) {
             p.floquetConverged = false;
         }
         if (!p.floquetConverged) {
@@ -542,7 +542,7 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
                 // the twin's 0.76° at 15.7 mph); a drift beyond 15 % in 10 periods is not staying.
                 p.stability = std::abs(p.twinPersistence - 1) < 0.15 ? Stability::Stable : Stability::Unstable;
                 p.stabilityEvidence = "persistence";
-            } catch (const IntegrationFailure&) {
+            } catch (const NumericalFailure&) {
                 p.stabilityEvidence = "none";
                 p.stability = Stability::NotComputed;
             }

@@ -18,7 +18,7 @@ struct EomRunSettings {
 std::vector<double> getEomAbsoluteTolerances(double accuracy);
 
 /// Integrates from `y0` at t = 0 (default: static equilibrium). Throws
-/// IntegrationFailure (StiffIntegrator.h) with the time and the state.
+/// NumericalFailure with the time and the state.
 RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settings);
 RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settings,
                       const EomHalfCarModel::State& y0);

@@ -142,18 +142,18 @@ void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluatio
 
 namespace {
 using Memory = ReducedHalfCarModel::TruckMemory;
-constexpr int kFlatSize = 6 + 14;
+constexpr int kFlatSize = 6 + 16;  // car body state, then the truck memory
 
 std::vector<double> flatten(const ReducedHalfCarModel::State& y, const Memory& m) {
     return {y[0], y[1], y[2], y[3], y[4], y[5],
             double(int(m.mode.support)), double(int(m.mode.wheels)), double(int(m.mode.wedge[0])),
             double(int(m.mode.wedge[1])), double(int(m.mode.spring[0])), double(int(m.mode.spring[1])),
             double(int(m.mode.lateralWedge)), double(int(m.mode.gib)), m.compression[0], m.compression[1],
-            m.wedgeAnchor[0], m.wedgeAnchor[1], m.lateralDeflection, m.lateralAnchor};
+            m.wedgeAnchor[0], m.wedgeAnchor[1], m.lateralDeflection, m.lateralAnchor, m.rollBolster, m.rollWheelset};
 }
 
 void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memory& m) {
-    if (int(f.size()) != kFlatSize + 2)
+    if (int(f.size()) != kFlatSize)
         throw std::invalid_argument("reduced model: initial state has the wrong size");
     for (int i = 0; i < 6; ++i) y[i] = f[i];
     m.mode.support = CarBodySupport(int(f[6]));
@@ -170,6 +170,10 @@ void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memo
     m.rollWheelset = f[21];
 }
 }  // namespace
+
+std::vector<double> ReducedHalfCarModel::calcStaticFlatState() const {
+    return flatten(makeStaticState(), makeStaticMemory());
+}
 
 RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, ReducedRunStatistics* stats,
                           const std::vector<double>& initial, const RunLimits& limits) {
@@ -215,7 +219,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         y += h / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
         energy[0] += h / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
         if (!y.allFinite()) {
-            throw IntegrationFailure(fmt::format(
+            throw NumericalFailure(fmt::format(
                 "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",
                 t + h, mem.mode.describe(), y[0], y[1], y[2]), t + h);
         }
@@ -224,8 +228,6 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     }
     result.steps = st.steps;
     result.finalState = flatten(y, mem);
-    result.finalState.push_back(mem.rollBolster);
-    result.finalState.push_back(mem.rollWheelset);
     result.realizations = 4 * st.steps + st.steps + 1;
     result.simTime = k * h;
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -59,6 +59,9 @@ public:
 
     State makeStaticState() const;
     TruckMemory makeStaticMemory() const;
+    /// The static state and truck memory as one flat vector, the layout of
+    /// RunResult::finalState and of simulateReduced's `initial`.
+    std::vector<double> calcStaticFlatState() const;
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
 
     const ChannelLayout& getChannels() const { return channels_; }

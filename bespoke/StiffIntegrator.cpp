@@ -105,7 +105,7 @@ void StiffIntegrator::advanceTo(double tOut) {
     if (flag < 0) {
         // The state CVODE holds is the last successful step's.
         CVodeGetCurrentTime(impl_->mem, &tReached);
-        throw IntegrationFailure(fmt::format("CVODE BDF failed near t = {:.6f} s: {}\nlast good state:\n{}",
+        throw NumericalFailure(fmt::format("CVODE BDF failed near t = {:.6f} s: {}\nlast good state:\n{}",
                                              double(tReached), impl_->lastError, describeState()),
                                  double(tReached));
     }

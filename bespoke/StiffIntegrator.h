@@ -3,6 +3,8 @@
 // hand-written models, on SUNDIALS CVODE (Debian's libsundials-dev) with a dense
 // direct linear solver and a difference-quotient Jacobian. BDF copes with the
 // stiff contacts and bristle friction; explicit Runge–Kutta does not.
+#include "mbmodel/TimeHistory.h"
+
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -11,15 +13,6 @@
 
 namespace rockroll {
 
-/// Thrown when CVODE fails; what() names the time and the state.
-class IntegrationFailure : public std::runtime_error {
-public:
-    IntegrationFailure(const std::string& what, double time) : std::runtime_error(what), time_(time) {}
-    double getTime() const { return time_; }
-
-private:
-    double time_;
-};
 
 class StiffIntegrator {
 public:
@@ -40,7 +33,7 @@ public:
     const std::vector<double>& getQuadrature() const { return q_; }
 
     void initialize(double t0, const double* y0);
-    /// Integrates to tOut (interpolated output); throws IntegrationFailure.
+    /// Integrates to tOut (interpolated output); throws NumericalFailure (mbmodel/TimeHistory.h).
     void advanceTo(double tOut);
     double getTime() const { return t_; }
     const std::vector<double>& getState() const { return y_; }

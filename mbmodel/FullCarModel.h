@@ -10,7 +10,6 @@ namespace rockroll {
 class FullCarModel : public RockingModel {
 public:
     FullCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
-    std::string getName() const override { return "fullcar"; }
 
 protected:
     void setCarBodyHeight(SimTK::State& s, double z) const override;

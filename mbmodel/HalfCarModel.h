@@ -12,7 +12,6 @@ namespace rockroll {
 class HalfCarModel : public RockingModel {
 public:
     HalfCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
-    std::string getName() const override { return "halfcar"; }
 
 protected:
     void setCarBodyHeight(SimTK::State& s, double z) const override;

@@ -1,7 +1,5 @@
 #include "mbmodel/RockingModel.h"
 
-#include "mbmodel/FullCarModel.h"
-#include "mbmodel/HalfCarModel.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -158,13 +156,6 @@ TruckPowers RockingModel::calcPowers(const State& s) const {
 double RockingModel::calcMechanicalEnergy(const State& s) const {
     system_.realize(s, Stage::Dynamics);
     return system_.calcEnergy(s);
-}
-
-std::unique_ptr<RockingModel> makeRockingModel(const std::string& model, const CarParameters& car,
-                                               const TrackInput& track, ModelOptions options) {
-    if (model == "halfcar") return std::make_unique<HalfCarModel>(car, track, options);
-    if (model == "fullcar") return std::make_unique<FullCarModel>(car, track, options);
-    throw std::invalid_argument(fmt::format("unknown model \"{}\"; expected halfcar or fullcar", model));
 }
 
 }  // namespace rockroll

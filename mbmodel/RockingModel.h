@@ -47,7 +47,6 @@ public:
     RockingModel(const RockingModel&) = delete;
     RockingModel& operator=(const RockingModel&) = delete;
 
-    virtual std::string getName() const = 0;
     const SimTK::MultibodySystem& getSystem() const { return system_; }
     const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
     const SimTK::GeneralForceSubsystem& getForces() const { return forces_; }
@@ -107,8 +106,5 @@ protected:
     const EnergyMeter* energyMeter_ = nullptr;  // owned by the force subsystem
 };
 
-/// Builds "halfcar" or "fullcar".
-std::unique_ptr<RockingModel> makeRockingModel(const std::string& model, const CarParameters& car,
-                                               const TrackInput& track, ModelOptions options);
 
 }  // namespace rockroll

@@ -1,5 +1,7 @@
 #include "scenarios/ScenarioLoader.h"
 
+#include "scenarios/ModelRegistry.h"
+
 #include "scenarios/DefaultScenario.h"
 
 #include <fmt/format.h>
@@ -169,7 +171,8 @@ void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
     if (!(sc.speed > 0)) run.fail("speed", "≤ 0", "a positive speed");
     sc.run.duration = run.getQuantity("duration", Dimension::Time);
     if (!(sc.run.duration > 0)) run.fail("duration", "≤ 0", "a positive time");
-    sc.model = run.getString("model", {"halfcar", "fullcar", "eom", "reduced"});
+    const std::vector<std::string> models = ModelRegistry::get().getNames();
+    sc.model = run.getString("model", std::set<std::string>(models.begin(), models.end()));
     sc.run.outputRate = run.getQuantity("output_rate", Dimension::Frequency, 500.0);
     sc.filterCutoffHz = run.getQuantity("filter_cutoff", Dimension::Frequency, 20.0);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))

@@ -25,7 +25,7 @@ struct Scenario {
     TrackSpec track;
     TrackEntry entry = TrackEntry::Lead;
     double speed = 0;            ///< [m/s]
-    std::string model;           ///< halfcar | fullcar | eom | reduced
+    std::string model;           ///< a ModelRegistry name (the loader accepts only those)
     EomSimplifications eom;      ///< [eom] table: the report's §4.1 simplifications
     RunSettings run;             ///< run.limits: the [limits] table, unresolved (0 = from the car)
     double filterCutoffHz = 20;

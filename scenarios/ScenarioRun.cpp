@@ -1,97 +1,90 @@
 #include "scenarios/ScenarioRun.h"
 
-#include "bespoke/EomSimulation.h"
-#include "bespoke/ReducedHalfCarModel.h"
-#include "bespoke/StiffIntegrator.h"
+#include "scenarios/ModelRegistry.h"
 
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace rockroll {
 
-namespace {
-TrackMotion makeMotion(const Scenario& sc, const RunStart& start) {
+TrackMotion makeTrackMotion(const Scenario& sc, const RunStart& start) {
     TrackMotion m;
     m.speed = sc.speed;
-    m.startDistance = start.distance;
-    m.startSpeed = start.speed;
+    if (start.from) {
+        m.startDistance = start.from->distance;
+        m.startSpeed = start.from->speed;
+    }
     m.rampTime = start.rampTime;
     return m;
+}
+
+namespace {
+const ModelDescriptor& getScenarioModel(const Scenario& sc) {
+    const ModelRegistry& registry = ModelRegistry::get();
+    if (const ModelDescriptor* d = registry.find(sc.model)) return *d;
+    throw ScenarioError(fmt::format("{}: key 'run.model' = \"{}\": expected one of {}", sc.source, sc.model,
+                                    fmt::join(registry.getNames(), ", ")));
 }
 }  // namespace
 
 std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunStart& start) {
-    ModelOptions options{sc.speed, sc.entry, makeMotion(sc, start), sc.attribution};
-    return makeRockingModel(sc.model, sc.car, TrackInput(sc.track), options);
+    const ModelDescriptor& d = getScenarioModel(sc);
+    if (!d.isMultibody())
+        throw ScenarioError(fmt::format("{}: model \"{}\" is not a multibody model; expected one of {}", sc.source,
+                                        sc.model, fmt::join(ModelRegistry::get().getMultibodyNames(), ", ")));
+    return d.makeMultibody(sc.car, TrackInput(sc.track),
+                           ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc, start), sc.attribution});
+}
+
+EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const TrackMotion& motion) {
+    return EomHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.eom);
 }
 
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start) {
-    return EomHalfCarModel(
-        sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase), sc.eom);
+    return makeScenarioEomModel(sc, makeTrackMotion(sc, start));
 }
-
-namespace {
-template <class Model>
-ScenarioRun summarize(RunResult result, const Model& model, const SummaryOptions& opt) {
-    ScenarioRun run;
-    run.result = std::move(result);
-    run.summary = summarizeRun(run.result, model.getChannels(), opt);
-    run.staticReference = opt.staticReference.empty() ? run.result.history.samples.front() : opt.staticReference;
-    return run;
-}
-
-ScenarioRun runModel(const Scenario& sc, const RunStart& start, const SummaryOptions& opt) {
-    try {
-        if (sc.model == "eom") {
-            const EomHalfCarModel model = makeScenarioEomModel(sc, start);
-            const EomRunSettings settings{sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy,
-                                          resolveRunLimits(sc.run.limits, sc.car)};
-            if (start.state.empty()) return summarize(simulateEom(model, settings), model, opt);
-            return summarize(simulateEom(model, settings, Eigen::Map<const EomHalfCarModel::State>(start.state.data())),
-                             model, opt);
-        }
-        if (sc.model == "reduced") {
-            const ReducedHalfCarModel model(
-                sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeMotion(sc, start), sc.car.wheelbase),
-                sc.reduced);
-            return summarize(
-                simulateReduced(model, sc.run.duration, nullptr, start.state, resolveRunLimits(sc.run.limits, sc.car)),
-                model, opt);
-        }
-    } catch (const IntegrationFailure& e) {
-        throw NumericalFailure(e.what(), e.getTime());
-    }
-    const auto model = makeScenarioModel(sc, start);
-    RunSettings settings = sc.run;
-    settings.limits = resolveRunLimits(sc.run.limits, sc.car);
-    return summarize(simulate(*model, settings, start.state), *model, opt);
-}
-}  // namespace
 
 void checkSwitchesApply(const Scenario& sc) {
-    const bool simbody = sc.model == "halfcar" || sc.model == "fullcar";
-    if (sc.reduced.truckWeight && sc.model != "reduced")
-        throw ScenarioError(fmt::format("{}: key 'reduced.truck_weight' = true: expected model reduced, not \"{}\" "
-                                        "(the Simbody and eom models always carry the truck's weight)",
-                                        sc.source, sc.model));
-    if (!simbody && !sc.attribution.truckGravity)
-        throw ScenarioError(fmt::format("{}: key 'attribution.truck_gravity' = false: expected model halfcar or "
-                                        "fullcar, not \"{}\"", sc.source, sc.model));
-    if (!simbody && sc.attribution.truckMassScale != 1)
-        throw ScenarioError(fmt::format("{}: key 'attribution.truck_mass_scale' = {}: expected model halfcar or "
-                                        "fullcar, not \"{}\"", sc.source, sc.attribution.truckMassScale, sc.model));
+    const ModelDescriptor& d = getScenarioModel(sc);
+    const ModelRegistry& registry = ModelRegistry::get();
+    if (sc.reduced.truckWeight && !d.masslessTruck) {
+        std::vector<std::string> massless;
+        for (const auto& m : registry.getModels())
+            if (m.masslessTruck) massless.push_back(m.name);
+        throw ScenarioError(fmt::format("{}: key 'reduced.truck_weight' = true: expected model {}, not \"{}\" "
+                                        "(the other models always carry the truck's weight)",
+                                        sc.source, fmt::join(massless, " or "), sc.model));
+    }
+    const std::string multibody = fmt::format("{}", fmt::join(registry.getMultibodyNames(), " or "));
+    if (!d.isMultibody() && !sc.attribution.truckGravity)
+        throw ScenarioError(fmt::format("{}: key 'attribution.truck_gravity' = false: expected model {}, not \"{}\"",
+                                        sc.source, multibody, sc.model));
+    if (!d.isMultibody() && sc.attribution.truckMassScale != 1)
+        throw ScenarioError(fmt::format("{}: key 'attribution.truck_mass_scale' = {}: expected model {}, not \"{}\"",
+                                        sc.source, sc.attribution.truckMassScale, multibody, sc.model));
 }
 
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     checkSwitchesApply(sc);
+    const ModelDescriptor& d = getScenarioModel(sc);
+    if (start.from && start.from->model != d.name)
+        throw ScenarioError(fmt::format("{}: cannot continue a \"{}\" state with model \"{}\"", sc.source,
+                                        start.from->model, d.name));
     SummaryOptions opt;
     opt.forcingPeriod = sc.track.railLength / sc.speed;
     opt.filterCutoffHz = sc.filterCutoffHz;
     opt.staticReference = start.staticReference;
     opt.severeSeparationTime = sc.severeSeparationTime;
-    ScenarioRun run = runModel(sc, start, opt);
-    run.finalDistance = makeMotion(sc, start).calcDistance(run.result.simTime);
-    run.summary.model = sc.model;
+
+    const TrackMotion motion = makeTrackMotion(sc, start);
+    const std::unique_ptr<TimeDomainModel> model = d.make(sc, motion);
+    ScenarioRun run;
+    run.result = model->simulate(sc, start.from ? start.from->y : std::vector<double>{});
+    run.summary = summarizeRun(run.result, model->getChannels(), opt);
+    run.staticReference = opt.staticReference.empty() ? run.result.history.samples.front() : opt.staticReference;
+    run.restart = RestartState{d.name, run.result.finalState, motion.calcDistance(run.result.simTime), sc.speed};
+    run.summary.model = d.name;
     run.summary.car = sc.car.name;
     // Inputs echoed in the units they were given, without conversion round-off.
     auto echo = [](double x) { return std::round(x * 1e9) / 1e9; };

@@ -1,39 +1,44 @@
 #pragma once
-// Runs one scenario end to end: model, simulation, summary.
+// Runs one scenario end to end: the model the registry names, its simulation,
+// the summary, and the state to continue from.
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/RunSummary.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ScenarioLoader.h"
+#include "scenarios/TimeDomainModel.h"
 
 #include <memory>
+#include <optional>
 
 namespace rockroll {
 
 /// Where a run starts. Default: static equilibrium on level track, at speed from
-/// t = 0. Continuing a speed sweep: the previous run's final state, the distance
-/// it reached, and its speed (ramped to the new one over rampTime).
+/// t = 0. Continuing a speed sweep: the previous run's RestartState (its state,
+/// the distance it reached and its speed, ramped to the new one over rampTime).
 struct RunStart {
-    std::vector<double> state;            ///< RunResult::finalState of the previous run; empty: static
-    double distance = 0;                  ///< s at t = 0 [m]
-    double speed = -1;                    ///< V₀ [m/s]; < 0: no ramp
+    std::optional<RestartState> from;     ///< empty: static equilibrium
     double rampTime = 1.0;                ///< [s]
-    std::vector<double> staticReference;  ///< history row of the static state (for static loads)
+    std::vector<double> staticReference;  ///< history row of the static state (for static loads); empty: this run's first
 };
 
 struct ScenarioRun {
     RunResult result;
     RunSummary summary;
-    double finalDistance = 0;             ///< s at the end [m]
+    RestartState restart;                 ///< the end of this run, to continue from
     std::vector<double> staticReference;  ///< the static row this run's summary used
 };
 
+/// The track's s(t) for a run of `sc` from `start`.
+TrackMotion makeTrackMotion(const Scenario& sc, const RunStart& start = {});
+/// The Simbody model of a scenario (sc.model must be a multibody model of the registry).
 std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunStart& start = {});
 /// The equation-of-motion half car of a scenario (its [eom] simplifications).
+EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const TrackMotion& motion);
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start = {});
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start = {});
-/// ScenarioError if a [reduced] or [attribution] switch is set for a model it does not
-/// apply to (it would be silently ignored). runScenario calls it; so does runSweeps,
-/// before its threads start.
+/// ScenarioError if sc.model is not a model of the registry, or a [reduced] or
+/// [attribution] switch is set for a model it does not apply to (it would be
+/// silently ignored). runScenario calls it; so does runSweeps, before its threads start.
 void checkSwitchesApply(const Scenario& sc);
 
 }  // namespace rockroll

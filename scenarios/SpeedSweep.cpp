@@ -29,7 +29,7 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
         SweepPoint p;
         p.speedMph = mph;
         p.direction = spec.direction == SweepDirection::Up ? "up" : "down";
-        p.start = next.state.empty() ? "rest" : "continued";
+        p.start = next.from ? "continued" : "rest";
         next.staticReference = staticReference;
         try {
             const ScenarioRun run = runScenario(sc, next);
@@ -39,9 +39,7 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
                 // A derailed or overturned car is a result; the next speed starts from rest.
                 next = RunStart{};
             } else {
-                next.state = run.result.finalState;
-                next.distance = run.finalDistance;
-                next.speed = sc.speed;
+                next.from = run.restart;
                 next.rampTime = spec.rampTime;
             }
         } catch (const std::exception& e) {

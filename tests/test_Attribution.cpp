@@ -2,6 +2,7 @@
 // and the Simbody models' [attribution] truck_gravity / truck_mass_scale. Each
 // must change exactly what it says in the static state, and nothing else.
 #include "bespoke/ReducedHalfCarModel.h"
+#include "scenarios/ModelRegistry.h"
 #include "mbmodel/RockingModel.h"
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
@@ -50,7 +51,7 @@ Static makeStatic(const std::string& modelName, AttributionSwitches a) {
     options.attribution = a;
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
-    out.model = makeRockingModel(modelName, makeCarParameters("70ton-loaded"), TrackInput(track), options);
+    out.model = ModelRegistry::get().getModel(modelName).makeMultibody(makeCarParameters("70ton-loaded"), TrackInput(track), options);
     const SimTK::State s = out.model->makeStaticState();
     out.model->getSystem().realize(s, SimTK::Stage::Acceleration);
     for (int i = 0; i < s.getNU(); ++i) out.maxUDot = std::max(out.maxUDot, std::abs(s.getUDot()[i]));

@@ -195,9 +195,7 @@ TEST(EnergyAudit, ContinuedRunCountsItsEnergiesFromItsOwnStart) {
     const Scenario sc = makeSevereCase("halfcar", 1.5);
     const ScenarioRun first = runScenario(sc);
     RunStart start;
-    start.state = first.result.finalState;
-    start.distance = first.finalDistance;
-    start.speed = sc.speed;
+    start.from = first.restart;
     start.staticReference = first.staticReference;
     const ScenarioRun next = runScenario(sc, start);
     expectBalanced(next, "halfcar (continued)", 0.01);

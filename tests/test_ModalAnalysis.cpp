@@ -1,5 +1,6 @@
 // Modes of the linearized Simbody models against the report's Table 1.
 #include "mbmodel/ModalAnalysis.h"
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@ namespace {
 std::vector<Mode> calcCarModes(const std::string& carName, const std::string& model) {
     TrackSpec level;
     level.railLength = 39 * units::foot;
-    const auto m = makeRockingModel(model, makeModalCar(makeCarParameters(carName)), TrackInput(level),
+    const auto m = ModelRegistry::get().getModel(model).makeMultibody(makeModalCar(makeCarParameters(carName)), TrackInput(level),
                                     ModelOptions{15 * units::mph, TrackEntry::Lead});
     return calcModes(*m);
 }

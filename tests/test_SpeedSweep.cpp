@@ -38,9 +38,7 @@ TEST(SpeedSweep, ContinuedRunStartsWhereThePreviousEnded) {
         Scenario b = a;
         b.speed = 17 * units::mph;
         RunStart start;
-        start.state = first.result.finalState;
-        start.distance = first.finalDistance;
-        start.speed = a.speed;
+        start.from = first.restart;
         start.staticReference = first.staticReference;
         const ScenarioRun second = runScenario(b, start);
         const auto end = lastRow(first), begin = firstRow(second);
@@ -53,7 +51,9 @@ TEST(SpeedSweep, ContinuedRunStartsWhereThePreviousEnded) {
             }
             EXPECT_NEAR(begin[c], end[c], 1e-6 * (1 + std::abs(end[c]))) << model << " " << names[c];
         }
-        EXPECT_NEAR(first.finalDistance, 4 * a.speed, 1e-9);
+        EXPECT_NEAR(first.restart.distance, 4 * a.speed, 1e-9);
+        EXPECT_EQ(first.restart.speed, a.speed) << model;
+        EXPECT_EQ(first.restart.model, model);
         EXPECT_EQ(second.summary.staticWheelLoadLb, first.summary.staticWheelLoadLb) << model;
     }
 }

@@ -1,6 +1,7 @@
 // Both Simbody models start in static equilibrium with every load equal to its
 // weight share, for each of the report's cars.
 #include "mbmodel/RockingModel.h"
+#include "scenarios/ModelRegistry.h"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +24,7 @@ TEST_P(StaticEquilibrium, AccelerationsVanishAndLoadsEqualWeightShares) {
     const CarParameters car = makeCarParameters(GetParam().car);
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
-    const auto model = makeRockingModel(GetParam().model, car, TrackInput(track), {16.5 * units::mph});
+    const auto model = ModelRegistry::get().getModel(GetParam().model).makeMultibody(car, TrackInput(track), {16.5 * units::mph});
     const SimTK::State s = model->makeStaticState();
     model->getSystem().realize(s, SimTK::Stage::Acceleration);
     const SimTK::Vector& udot = s.getUDot();

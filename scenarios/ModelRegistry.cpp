@@ -1,0 +1,46 @@
+#include "scenarios/ModelRegistry.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <stdexcept>
+
+namespace rockroll {
+
+ModelRegistry::ModelRegistry() {
+    models_.push_back(describeHalfCarModel());
+    models_.push_back(describeFullCarModel());
+    models_.push_back(describeEomHalfCarModel());
+    models_.push_back(describeReducedModel());
+}
+
+const ModelRegistry& ModelRegistry::get() {
+    static const ModelRegistry registry;
+    return registry;
+}
+
+std::vector<std::string> ModelRegistry::getNames() const {
+    std::vector<std::string> names;
+    for (const auto& m : models_) names.push_back(m.name);
+    return names;
+}
+
+std::vector<std::string> ModelRegistry::getMultibodyNames() const {
+    std::vector<std::string> names;
+    for (const auto& m : models_)
+        if (m.isMultibody()) names.push_back(m.name);
+    return names;
+}
+
+const ModelDescriptor* ModelRegistry::find(std::string_view name) const {
+    for (const auto& m : models_)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+const ModelDescriptor& ModelRegistry::getModel(std::string_view name) const {
+    if (const ModelDescriptor* m = find(name)) return *m;
+    throw std::invalid_argument(
+        fmt::format("unknown model \"{}\"; expected one of {}", name, fmt::join(getNames(), ", ")));
+}
+
+}  // namespace rockroll

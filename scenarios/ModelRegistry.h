@@ -1,0 +1,65 @@
+#pragma once
+// Which time-domain models exist, by name. The only place a model's name is
+// bound to its implementation: the scenario loader, the command line, sweeps,
+// validate, bench and Python look models up here. Adding a model is one file in
+// scenarios/models/ plus one line in ModelRegistry.cpp.
+#include "scenarios/TimeDomainModel.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rockroll {
+
+struct CarParameters;
+struct ModelOptions;
+struct TrackMotion;
+class RockingModel;
+class TrackInput;
+
+struct ModelDescriptor {
+    std::string name;         ///< as scenarios and --model spell it
+    std::string description;  ///< one line for --help and reports
+    /// Builds the model of a scenario for one run; `motion` is the track's s(t),
+    /// continuing an earlier run's distance and speed when a sweep carries state.
+    std::function<std::unique_ptr<TimeDomainModel>(const Scenario&, const TrackMotion&)> make;
+    /// Simbody multibody models only (null otherwise): the RockingModel itself,
+    /// for modal analysis and model-level tests. Also what makes the [attribution]
+    /// switches (truck gravity, truck mass scale) apply.
+    std::function<std::unique_ptr<RockingModel>(const CarParameters&, const TrackInput&, const ModelOptions&)>
+        makeMultibody;
+    /// The model has a massless truck (report §2.2), so [reduced] truck_weight applies.
+    bool masslessTruck = false;
+
+    bool isMultibody() const { return bool(makeMultibody); }
+};
+
+class ModelRegistry {
+public:
+    /// Every model, in a fixed order (the order --help lists them).
+    static const ModelRegistry& get();
+
+    const std::vector<ModelDescriptor>& getModels() const { return models_; }
+    std::vector<std::string> getNames() const;
+    /// The names of the multibody (Simbody) models.
+    std::vector<std::string> getMultibodyNames() const;
+    /// nullptr when no model has that name.
+    const ModelDescriptor* find(std::string_view name) const;
+    /// The model of that name; std::invalid_argument naming the name and listing
+    /// the models when there is none.
+    const ModelDescriptor& getModel(std::string_view name) const;
+
+private:
+    ModelRegistry();
+    std::vector<ModelDescriptor> models_;
+};
+
+// One function per file in scenarios/models/.
+ModelDescriptor describeFullCarModel();
+ModelDescriptor describeHalfCarModel();
+ModelDescriptor describeEomHalfCarModel();
+ModelDescriptor describeReducedModel();
+
+}  // namespace rockroll

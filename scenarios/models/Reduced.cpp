@@ -1,0 +1,36 @@
+// Registry entry of the report's reduced model: massless truck, fixed-step RK4
+// (bespoke/ReducedHalfCarModel.h).
+#include "bespoke/ReducedHalfCarModel.h"
+#include "scenarios/ModelRegistry.h"
+#include "scenarios/ScenarioLoader.h"
+
+namespace rockroll {
+
+namespace {
+class ReducedTimeDomainModel final : public TimeDomainModel {
+public:
+    explicit ReducedTimeDomainModel(ReducedHalfCarModel model) : model_(std::move(model)) {}
+    const ChannelLayout& getChannels() const override { return model_.getChannels(); }
+    std::vector<double> calcStaticState() const override { return model_.calcStaticFlatState(); }
+    RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const override {
+        return simulateReduced(model_, sc.run.duration, nullptr, y0, resolveRunLimits(sc.run.limits, sc.car));
+    }
+
+private:
+    ReducedHalfCarModel model_;
+};
+}  // namespace
+
+ModelDescriptor describeReducedModel() {
+    ModelDescriptor d;
+    d.name = "reduced";
+    d.description = "the report's reduced half car: massless truck, fixed-step RK4 at 0.005 s (report §2.2)";
+    d.masslessTruck = true;
+    d.make = [](const Scenario& sc, const TrackMotion& motion) {
+        return std::unique_ptr<TimeDomainModel>(std::make_unique<ReducedTimeDomainModel>(ReducedHalfCarModel(
+            sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.reduced)));
+    };
+    return d;
+}
+
+}  // namespace rockroll

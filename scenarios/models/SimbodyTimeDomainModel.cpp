@@ -1,0 +1,53 @@
+#include "scenarios/models/SimbodyTimeDomainModel.h"
+
+#include "mbmodel/FullCarModel.h"
+#include "mbmodel/HalfCarModel.h"
+#include "mbmodel/Simulation.h"
+#include "scenarios/ModelRegistry.h"
+#include "scenarios/ScenarioLoader.h"
+
+namespace rockroll {
+
+std::vector<double> SimbodyTimeDomainModel::calcStaticState() const {
+    const SimTK::State s = model_->makeStaticState();
+    return std::vector<double>(&s.getY()[0], &s.getY()[0] + s.getNY());
+}
+
+RunResult SimbodyTimeDomainModel::simulate(const Scenario& sc, const std::vector<double>& y0) const {
+    RunSettings settings = sc.run;
+    settings.limits = resolveRunLimits(sc.run.limits, sc.car);
+    return rockroll::simulate(*model_, settings, y0);
+}
+
+ModelOptions makeModelOptions(const Scenario& sc, const TrackMotion& motion) {
+    return ModelOptions{sc.speed, sc.entry, motion, sc.attribution};
+}
+
+namespace {
+template <class Car>
+ModelDescriptor describeSimbodyCar(std::string name, std::string description) {
+    ModelDescriptor d;
+    d.name = std::move(name);
+    d.description = std::move(description);
+    d.makeMultibody = [](const CarParameters& car, const TrackInput& track, const ModelOptions& options) {
+        return std::unique_ptr<RockingModel>(std::make_unique<Car>(car, track, options));
+    };
+    d.make = [](const Scenario& sc, const TrackMotion& motion) {
+        return std::unique_ptr<TimeDomainModel>(std::make_unique<SimbodyTimeDomainModel>(
+            std::make_unique<Car>(sc.car, TrackInput(sc.track), makeModelOptions(sc, motion))));
+    };
+    return d;
+}
+}  // namespace
+
+ModelDescriptor describeHalfCarModel() {
+    return describeSimbodyCar<HalfCarModel>(
+        "halfcar", "Simbody half car: car body, bolster, equivalent wheelset (report §2.2)");
+}
+
+ModelDescriptor describeFullCarModel() {
+    return describeSimbodyCar<FullCarModel>(
+        "fullcar", "Simbody full car: car body, two trucks, four wheelsets, with pitch and yaw");
+}
+
+}  // namespace rockroll

@@ -1,0 +1,101 @@
+// The model registry: every time-domain model is reachable by its name alone, runs
+// from its own static state, continues from its own RestartState and refuses
+// another model's.
+#include "scenarios/ModelRegistry.h"
+#include "tests/TestCases.h"
+
+#include <gtest/gtest.h>
+#include <set>
+
+namespace rockroll {
+namespace {
+
+using test_cases::makeCase;
+
+TEST(ModelRegistry, NamesAreUniqueAndEveryModelCanBeBuilt) {
+    const ModelRegistry& registry = ModelRegistry::get();
+    const std::vector<std::string> names = registry.getNames();
+    EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
+    EXPECT_EQ(names, (std::vector<std::string>{"halfcar", "fullcar", "eom", "reduced"}));
+    EXPECT_EQ(registry.getMultibodyNames(), (std::vector<std::string>{"halfcar", "fullcar"}));
+    for (const ModelDescriptor& d : registry.getModels()) {
+        EXPECT_FALSE(d.description.empty()) << d.name;
+        ASSERT_TRUE(d.make) << d.name;
+        EXPECT_EQ(registry.find(d.name), &d);
+    }
+    EXPECT_EQ(registry.find("tram"), nullptr);
+    try {
+        registry.getModel("tram");
+        FAIL() << "no error for an unknown model";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("\"tram\""), std::string::npos) << e.what();
+        for (const auto& n : names) EXPECT_NE(std::string(e.what()).find(n), std::string::npos) << e.what();
+    }
+}
+
+/// A run from rest starts at the model's static state; its RestartState names the
+/// model and carries its final state; a run continued from it starts there.
+TEST(ModelRegistry, EveryModelRunsFromItsStaticStateAndContinuesFromItsRestartState) {
+    for (const ModelDescriptor& d : ModelRegistry::get().getModels()) {
+        const Scenario sc = makeCase(d.name, 0.75, 16.5, 0.4);
+        const auto model = d.make(sc, makeTrackMotion(sc));
+        const std::vector<double> y0 = model->calcStaticState();
+        ASSERT_FALSE(y0.empty()) << d.name;
+        const ScenarioRun first = runScenario(sc);
+        EXPECT_EQ(first.restart.model, d.name);
+        EXPECT_EQ(first.restart.y.size(), y0.size()) << d.name;
+        EXPECT_EQ(first.restart.speed, sc.speed) << d.name;
+        EXPECT_NEAR(first.restart.distance, sc.speed * first.result.simTime, 1e-9) << d.name;
+        EXPECT_NE(first.restart.y, y0) << d.name << ": the car did not move";
+        // The same run, started explicitly from the static state, is the same run.
+        const RunResult again = model->simulate(sc, y0);
+        EXPECT_EQ(again.history.samples.back(), first.result.history.samples.back()) << d.name;
+
+        RunStart start;
+        start.from = first.restart;
+        start.staticReference = first.staticReference;
+        const ScenarioRun next = runScenario(sc, start);
+        EXPECT_EQ(next.summary.model, d.name);
+        EXPECT_NEAR(next.restart.distance, 2 * first.restart.distance, 1e-9) << d.name;
+    }
+}
+
+TEST(ModelRegistry, AStateContinuesOnlyInTheModelThatProducedIt) {
+    const Scenario half = makeCase("halfcar", 0.75, 16.5, 0.2);
+    RunStart start;
+    start.from = runScenario(half).restart;
+    for (const char* other : {"fullcar", "eom", "reduced"}) {
+        try {
+            runScenario(makeCase(other, 0.75, 16.5, 0.2), start);
+            ADD_FAILURE() << "a halfcar state was accepted by " << other;
+        } catch (const ScenarioError& e) {
+            EXPECT_NE(std::string(e.what()).find("cannot continue a \"halfcar\" state"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(ModelRegistry, SwitchesApplyByCapabilityNotByName) {
+    Scenario sc = makeCase("eom", 0.75, 16.5, 0.2);
+    sc.attribution.truckGravity = false;
+    try {
+        checkSwitchesApply(sc);
+        FAIL() << "attribution switch accepted for eom";
+    } catch (const ScenarioError& e) {
+        EXPECT_NE(std::string(e.what()).find("expected model halfcar or fullcar"), std::string::npos) << e.what();
+    }
+    sc = makeCase("halfcar", 0.75, 16.5, 0.2);
+    sc.reduced.truckWeight = true;
+    try {
+        checkSwitchesApply(sc);
+        FAIL() << "reduced.truck_weight accepted for halfcar";
+    } catch (const ScenarioError& e) {
+        EXPECT_NE(std::string(e.what()).find("expected model reduced"), std::string::npos) << e.what();
+    }
+    sc.model = "nonesuch";
+    sc.reduced.truckWeight = false;
+    EXPECT_THROW(checkSwitchesApply(sc), ScenarioError);
+    EXPECT_THROW(makeScenarioModel(makeCase("eom", 0.75, 16.5, 0.2)), ScenarioError);
+}
+
+}  // namespace
+}  // namespace rockroll
