@@ -14,6 +14,7 @@
 //   build/bin/rockroll_accuracy [--sim-seconds=10] [--methods=cpodes,rkmerson,rk3,rkf,verlet]
 //                               [--accuracies=1e-3,1e-4,1e-5,1e-6] [--cases=light,severe,fullcar]
 //                               [--max-wall-s=600] [--repeats=3]
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 
 #include "mbmodel/Units.h"
@@ -149,9 +150,9 @@ int main(int argc, char** argv) {
         }
     }
     const std::vector<Case> allCases{
-        {"light", "light: 70-ton loaded, 0.75 in, 12 mph, halfcar", "halfcar", 12.0},
-        {"severe", "severe: 70-ton loaded, 0.75 in, 16.5 mph, halfcar (default case)", "halfcar", 16.5},
-        {"fullcar", "fullcar: 70-ton loaded, 0.75 in, 16.5 mph, fullcar (default case)", "fullcar", 16.5},
+        {"light", "light: 70-ton loaded, 0.75 in, 12 mph, halfcar", model_names::kHalfCar, 12.0},
+        {"severe", "severe: 70-ton loaded, 0.75 in, 16.5 mph, halfcar (default case)", model_names::kHalfCar, 16.5},
+        {"fullcar", "fullcar: 70-ton loaded, 0.75 in, 16.5 mph, fullcar (default case)", model_names::kFullCar, 16.5},
     };
     const double refAccuracy = *std::min_element(accuracies.begin(), accuracies.end());
 

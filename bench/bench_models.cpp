@@ -113,7 +113,8 @@ int main(int argc, char** argv) {
 
     // The target a model must reach, and the wall time per realization that target
     // allows at the realization count the integrator actually needed.
-    const std::map<std::string, double> target{{"halfcar", 200}, {"fullcar", 50}, {"eom", 200}, {"reduced", 200}};
+    using namespace model_names;
+    const std::map<std::string, double> target{{kHalfCar, 200}, {kFullCar, 50}, {kEom, 200}, {kReduced, 200}};
     fmt::print("\n{:<28}{:>16}{:>14}{:>10}{:>14}{:>12}{:>14}{:>16}\n", "case", "sim s / wall s", "max roll deg",
                "steps", "realizations", "real./step", "us / real.", "us/real. target");
     for (const auto& [name, m] : gMeasured) {

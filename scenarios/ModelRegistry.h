@@ -19,6 +19,15 @@ struct TrackMotion;
 class RockingModel;
 class TrackInput;
 
+/// The registered names, for code that studies a particular formulation (validate's
+/// comparisons, bench cases). Everything else enumerates the registry.
+namespace model_names {
+inline constexpr const char* kHalfCar = "halfcar";
+inline constexpr const char* kFullCar = "fullcar";
+inline constexpr const char* kEom = "eom";
+inline constexpr const char* kReduced = "reduced";
+}  // namespace model_names
+
 struct ModelDescriptor {
     std::string name;         ///< as scenarios and --model spell it
     std::string description;  ///< one line for --help and reports

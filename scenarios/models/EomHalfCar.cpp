@@ -34,7 +34,7 @@ private:
 
 ModelDescriptor describeEomHalfCarModel() {
     ModelDescriptor d;
-    d.name = "eom";
+    d.name = model_names::kEom;
     d.description = "equation-of-motion half car, the Simbody half car's equations written out (report §4.1)";
     d.make = [](const Scenario& sc, const TrackMotion& motion) {
         return std::unique_ptr<TimeDomainModel>(std::make_unique<EomTimeDomainModel>(makeScenarioEomModel(sc, motion)));

@@ -23,7 +23,7 @@ private:
 
 ModelDescriptor describeReducedModel() {
     ModelDescriptor d;
-    d.name = "reduced";
+    d.name = model_names::kReduced;
     d.description = "the report's reduced half car: massless truck, fixed-step RK4 at 0.005 s (report §2.2)";
     d.masslessTruck = true;
     d.make = [](const Scenario& sc, const TrackMotion& motion) {

@@ -42,12 +42,12 @@ ModelDescriptor describeSimbodyCar(std::string name, std::string description) {
 
 ModelDescriptor describeHalfCarModel() {
     return describeSimbodyCar<HalfCarModel>(
-        "halfcar", "Simbody half car: car body, bolster, equivalent wheelset (report §2.2)");
+        model_names::kHalfCar, "Simbody half car: car body, bolster, equivalent wheelset (report §2.2)");
 }
 
 ModelDescriptor describeFullCarModel() {
     return describeSimbodyCar<FullCarModel>(
-        "fullcar", "Simbody full car: car body, two trucks, four wheelsets, with pitch and yaw");
+        model_names::kFullCar, "Simbody full car: car body, two trucks, four wheelsets, with pitch and yaw");
 }
 
 }  // namespace rockroll
