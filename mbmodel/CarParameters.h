@@ -1,7 +1,7 @@
 #pragma once
-// Parameters of one freight car, SI. The report's Table 2 values and the brief's
-// §4 defaults for what the report leaves out; every entry is overridable by key
-// (see getCarParameterTable()).
+// Parameters of one freight car, SI, and the table of their keys, dimensions and
+// display units (getCarParameterTable()). The values of each car, with their
+// sources (report Table 2, brief §4, assumed), are data: scenarios/cars/*.toml.
 #include "mbmodel/Units.h"
 
 #include <string_view>
@@ -67,15 +67,13 @@ struct CarParameterInfo {
     double CarParameters::*member;
     units::Dimension dimension;
     const char* displayUnit;   ///< unit used in docs and printouts
-    const char* source;        ///< where the default comes from
     bool mayBeZero = false;    ///< zero is meaningful (no clearance, no damping, no friction)
 };
 
 const std::vector<CarParameterInfo>& getCarParameterTable();
 const CarParameterInfo* findCarParameter(std::string_view key);
 
-/// "70ton-loaded", "70ton-empty", "100ton-loaded".
-CarParameters makeCarParameters(std::string_view carName);
-std::vector<std::string> getCarNames();
+// The cars themselves are data: scenarios/cars/*.toml, read by scenarios/ScenarioLoader.h
+// (makeCarParameters, loadCarFile).
 
 }  // namespace rockroll

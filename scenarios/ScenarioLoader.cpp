@@ -2,10 +2,13 @@
 
 #include "scenarios/ModelRegistry.h"
 
+#include "scenarios/BuiltinCars.h"
 #include "scenarios/DefaultScenario.h"
 
 #include <fmt/format.h>
 #include <cmath>
+#include <filesystem>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -115,20 +118,94 @@ const toml::table* getTable(const toml::table& root, const std::string& name, co
     return n->as_table();
 }
 
+/// A car parameter's value must be finite, and positive unless zero means something.
+void checkCarValue(const TableReader& reader, const std::string& key, const CarParameterInfo& info, double value,
+                   const toml::node& given) {
+    if (!std::isfinite(value) || value < 0 || (value == 0 && !info.mayBeZero))
+        reader.fail(key, TableReader::describe(given), info.mayBeZero ? "a finite value ≥ 0" : "a finite positive value");
+}
+
+toml::table parseToml(std::string_view text, const std::string& source) {
+    try {
+        return toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                        e.source().begin.column, e.description()));
+    }
+}
+
+std::string readFile(const std::string& path, const char* what) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ScenarioError(fmt::format("{}: cannot open {}", path, what));
+    std::stringstream buf;
+    buf << in.rdbuf();
+    return buf.str();
+}
+
+/// A car file: name, description, and [parameters] with every parameter of the
+/// table as { value = "<number> <unit>", source = "<where it comes from>" }.
+CarParameters readCarFile(const toml::table& root, const std::string& src) {
+    TableReader top(&root, src, "");
+    CarParameters car;
+    car.name = top.getText("name", "");
+    if (car.name.empty()) top.fail("name", "(missing)", "the car's name, a non-empty string");
+    top.getText("description", "");
+    const toml::table* params = getTable(root, "parameters", src, true);
+    TableReader reader(params, src, "parameters.");
+    for (const CarParameterInfo& info : getCarParameterTable()) {
+        const toml::node* n = reader.require(info.key);
+        const toml::table* entry = n->as_table();
+        if (!entry) reader.fail(info.key, TableReader::describe(*n), "a table { value = ..., source = \"...\" }");
+        TableReader item(entry, src, fmt::format("parameters.{}.", info.key));
+        const double value = item.getQuantity("value", info.dimension);
+        checkCarValue(item, "value", info, value, *entry->get("value"));
+        if (item.getText("source", "").empty())
+            item.fail("source", "(missing)", "where the value comes from (report table, brief, assumed), a string");
+        item.rejectUnknown();
+        car.*(info.member) = value;
+    }
+    reader.rejectUnknown();
+    top.rejectUnknown({"parameters"});
+    return car;
+}
+
 void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader car(getTable(root, "car", src, true), src, "car.");
-    const auto names = getCarNames();
-    sc.car = makeCarParameters(car.getString("base", {names.begin(), names.end()}));
+    const bool inline_ = !car.has("base") && !car.has("file");
+    if (car.has("base") && car.has("file"))
+        car.fail("file", TableReader::describe(*root.get("car")->as_table()->get("file")),
+                 "either 'base' (a built-in car) or 'file' (a car file), not both");
+    if (car.has("base")) {
+        const auto names = getCarNames();
+        sc.car = makeCarParameters(car.getString("base", {names.begin(), names.end()}));
+    } else if (car.has("file")) {
+        // Relative to the scenario file's folder.
+        const std::filesystem::path given = car.getText("file", "");
+        const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(src).parent_path() / given;
+        try {
+            sc.car = loadCarFile(path.string());
+        } catch (const ScenarioError& e) {
+            throw ScenarioError(fmt::format("{}: key 'car.file' = \"{}\": {}", src, given.string(), e.what()));
+        }
+    } else {
+        // A complete car inline (as formatScenarioToml writes it): its name and every parameter.
+        sc.car = CarParameters{};
+        sc.car.name = car.getText("name", "");
+        if (sc.car.name.empty())
+            car.fail("base", "(missing)", "'base' (a built-in car), 'file' (a car file) or a complete car with 'name'");
+    }
     for (const auto& [k, v] : *root.get("car")->as_table()) {
         const CarParameterInfo* info = findCarParameter(k.str());
-        if (!info) continue;  // "base" was read above; rejectUnknown reports the rest
+        if (!info) continue;  // base/file/name were read above; rejectUnknown reports the rest
         const double value = car.getQuantity(info->key, info->dimension);
-        if (value < 0 || (value == 0 && !info->mayBeZero))
-            car.fail(info->key, TableReader::describe(v), info->mayBeZero ? "a value ≥ 0" : "a positive value");
+        checkCarValue(car, info->key, *info, value, v);
         sc.car.*(info->member) = value;
         const auto text = v.value<std::string>();
         sc.carOverrides.emplace_back(info->key, text ? *text : TableReader::describe(v));
     }
+    if (inline_)
+        for (const CarParameterInfo& info : getCarParameterTable())
+            if (!car.has(info.key)) car.require(info.key);  // names the first missing parameter
     car.rejectUnknown();
 }
 
@@ -260,13 +337,7 @@ void readAttribution(const toml::table& root, const std::string& src, Scenario& 
 }  // namespace
 
 Scenario parseScenario(std::string_view text, const std::string& source) {
-    toml::table root;
-    try {
-        root = toml::parse(text, source);
-    } catch (const toml::parse_error& e) {
-        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                        e.source().begin.column, e.description()));
-    }
+    const toml::table root = parseToml(text, source);
     Scenario sc;
     sc.source = source;
     TableReader top(&root, source, "");
@@ -284,13 +355,34 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
 }
 
 Scenario loadScenarioFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ScenarioError(fmt::format("{}: cannot open scenario file", path));
-    std::stringstream buf;
-    buf << in.rdbuf();
-    Scenario sc = parseScenario(buf.str(), path);
-    sc.sourceSha256 = calcSha256(buf.str());
+    const std::string text = readFile(path, "scenario file");
+    Scenario sc = parseScenario(text, path);
+    sc.sourceSha256 = calcSha256(text);
     return sc;
+}
+
+CarParameters parseCarFile(std::string_view text, const std::string& source) {
+    return readCarFile(parseToml(text, source), source);
+}
+
+CarParameters loadCarFile(const std::string& path) { return parseCarFile(readFile(path, "car file"), path); }
+
+std::vector<std::string> getCarNames() {
+    std::vector<std::string> names;
+    for (const auto& c : kBuiltinCars) names.emplace_back(c.name);
+    return names;
+}
+
+CarParameters makeCarParameters(std::string_view carName) {
+    for (const auto& c : kBuiltinCars)
+        if (carName == c.name) {
+            CarParameters car = parseCarFile(c.toml, fmt::format("<built-in car: scenarios/cars/{}.toml>", c.name));
+            if (car.name != c.name)
+                throw ScenarioError(fmt::format("scenarios/cars/{}.toml: key 'name' = \"{}\": expected \"{}\" (the file's name)",
+                                                c.name, car.name, c.name));
+            return car;
+        }
+    throw ScenarioError(fmt::format("unknown car \"{}\"; expected one of: {}", carName, fmt::join(getCarNames(), ", ")));
 }
 
 Scenario getDefaultScenario() {
@@ -334,8 +426,8 @@ std::string formatScenarioToml(const Scenario& sc) {
     using units::Dimension;
     toml::table root;
     if (!sc.description.empty()) root.insert("description", sc.description);
-    toml::table car;
-    car.insert("base", sc.car.name);
+    toml::table car;  // the complete car inline, so the document does not depend on a car file
+    car.insert("name", sc.car.name);
     for (const CarParameterInfo& info : getCarParameterTable()) {
         const double v = sc.car.*(info.member);
         if (info.dimension == Dimension::Dimensionless) car.insert(info.key, v);

@@ -41,6 +41,17 @@ public:
 
 Scenario loadScenarioFile(const std::string& path);
 
+/// Cars as data (scenarios/cars/*.toml): `name`, `description` and a [parameters]
+/// table giving every car parameter as { value = "<number> <unit>", source = "..." }.
+/// A scenario takes one with [car] base = "<built-in name>" or file = "<path
+/// relative to the scenario>", or defines the whole car inline with name = "...".
+CarParameters parseCarFile(std::string_view tomlText, const std::string& sourceName);
+CarParameters loadCarFile(const std::string& path);
+/// The built-in cars: the files of scenarios/cars/, compiled in by CMake.
+std::vector<std::string> getCarNames();
+/// A built-in car by name; ScenarioError listing the names when there is none.
+CarParameters makeCarParameters(std::string_view carName);
+
 /// The resolved scenario as a complete TOML document: every car parameter, the
 /// track, run, integrator, [eom] and [limits] values, each in SI with its unit
 /// and printed to round-trip exactly, so parseScenario of it rebuilds a

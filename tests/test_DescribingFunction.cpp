@@ -1,6 +1,7 @@
 // Describing-function steady state: against a long run of its time-domain twin,
 // and continuation through the folds of the jump resonance.
 #include "bespoke/DescribingFunction.h"
+#include "scenarios/ScenarioLoader.h"
 #include "bespoke/EomSimulation.h"
 #include "mbmodel/Units.h"
 

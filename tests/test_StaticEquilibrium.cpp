@@ -1,6 +1,7 @@
 // Both Simbody models start in static equilibrium with every load equal to its
 // weight share, for each of the report's cars.
 #include "mbmodel/RockingModel.h"
+#include "scenarios/ScenarioLoader.h"
 #include "scenarios/ModelRegistry.h"
 
 #include <gtest/gtest.h>
