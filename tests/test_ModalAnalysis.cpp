@@ -1,10 +1,12 @@
 // Modes of the linearized Simbody models against the report's Table 1.
 #include "mbmodel/ModalAnalysis.h"
 #include "scenarios/ScenarioRun.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -66,10 +68,11 @@ TEST(ModalAnalysis, FullCarAddsPitchAndYawAndAgreesWithTheHalfCar) {
 }
 
 TEST(ModalAnalysis, ModesCommandPrintsJsonWithNamedModes) {
+    const std::filesystem::path json = rockroll::test::makeTestTempDir() / "modes.json";
     const std::string cmd = std::string(ROCKROLL_BIN) + " modes " + ROCKROLL_SCENARIO_DIR +
-                            "/70ton-loaded.toml --model halfcar --json > modes_test.json";
+                            "/70ton-loaded.toml --model halfcar --json > '" + json.string() + "'";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
-    std::ifstream in("modes_test.json");
+    std::ifstream in(json);
     const auto j = nlohmann::json::parse(in);
     ASSERT_TRUE(j.contains("modes"));
     bool heave = false, roll = false, sway = false;

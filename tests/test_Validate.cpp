@@ -3,6 +3,7 @@
 // CSV as an RFC 4180 table with its required columns by name, each JSON, and each
 // plot's sidecar (app/plots.py) against the CSV columns it says it drew.
 #include "tests/CsvReader.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
@@ -303,8 +304,7 @@ TEST(Validate, CommittedReportNamesAnExistingCommit) {
 }
 
 TEST(Validate, QuickRunWritesAReportWithEverySection) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "rockroll_validate_quick";
-    std::filesystem::remove_all(out);
+    const std::filesystem::path out = rockroll::test::makeTestTempDir() / "out";
     const std::string cmd = std::string(ROCKROLL_BIN) + " validate --quick --out '" + out.string() + "' > /dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const std::string report = readFile((out / "REPORT.md").string());
@@ -347,9 +347,7 @@ TEST(Validate, CommittedResultsReadBack) {
 // The read-back checks can fail: a shifted header, a wrong column in a plot, or a
 // quick-run steady CSV that calls a solution stable.
 TEST(Validate, ReadBackChecksCatchWrongFiles) {
-    const fs::path dir = fs::path(ROCKROLL_BUILD_DIR) / "validate_readback_check";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = rockroll::test::makeTestTempDir();
     auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; };
     // The header that shifted every column on main.
     write("steady_70ton-loaded_0.75in.csv",
