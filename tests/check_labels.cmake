@@ -1,5 +1,5 @@
 # Test TestLabels.EveryTestHasOneLabel: every test ctest knows in the build tree has
-# exactly one label, one of LABELS (CMakeLists.txt, "test labels").
+# exactly one label, one of LABELS (CMakeLists.txt, "test labels"), and a readable name.
 #   cmake -DCTEST=ctest -DBUILD_DIR=build "-DLABELS=unit;model;validate;install" -P tests/check_labels.cmake
 cmake_minimum_required(VERSION 3.22)
 execute_process(COMMAND ${CTEST} --test-dir ${BUILD_DIR} --show-only=json-v1
@@ -34,6 +34,11 @@ foreach(i RANGE ${last})
       endif()
     endforeach()
   endif()
+  # Readable names: no parameter bytes, no bare parameter index (every
+  # INSTANTIATE_TEST_SUITE_P has a name generator).
+  if(NOT name MATCHES "^[A-Za-z0-9_./-]+$" OR name MATCHES "/[0-9]+$")
+    string(APPEND bad "  ${name}: not a readable test name (give INSTANTIATE_TEST_SUITE_P a name generator)\n")
+  endif()
   list(LENGTH labels nlabels)
   if(NOT nlabels EQUAL 1)
     string(APPEND bad "  ${name}: ${nlabels} labels (${labels})\n")
@@ -47,7 +52,7 @@ foreach(i RANGE ${last})
   endforeach()
 endforeach()
 if(bad)
-  message(FATAL_ERROR "Tests without exactly one label (CMakeLists.txt, RR_SUITES_<label>):\n${bad}")
+  message(FATAL_ERROR "Tests without exactly one label (CMakeLists.txt, RR_SUITES_<label>) or without a readable name:\n${bad}")
 endif()
 set(summary "")
 foreach(l IN LISTS LABELS)

@@ -17,7 +17,7 @@ std::vector<Mode> calcCarModes(const std::string& carName, const std::string& mo
     TrackSpec level;
     level.railLength = 39 * units::foot;
     const auto m = makeRockingModel(model, makeModalCar(makeCarParameters(carName)), TrackInput(level),
-                                    ModelOptions{15 * units::mph, TrackEntry::Lead});
+                                    ModelOptions{15 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}});
     return calcModes(*m);
 }
 const Mode& find(const std::vector<Mode>& modes, const std::string& name) {

@@ -4,12 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <ostream>
+#include <string>
+
 using namespace rockroll;
 
 namespace {
 struct Case {
     std::string model, car;
 };
+// How gtest prints a parameter (test listings, failures): the names, not the struct's bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.model << " " << c.car; }
 class StaticEquilibrium : public ::testing::TestWithParam<Case> {};
 
 double channel(const RockingModel& m, const std::vector<double>& v, const std::string& name) {
