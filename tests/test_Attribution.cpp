@@ -46,7 +46,8 @@ struct Static {
 
 Static makeStatic(const std::string& modelName, AttributionSwitches a) {
     Static out;
-    ModelOptions options{16.5 * units::mph};
+    ModelOptions options;
+    options.speed = 16.5 * units::mph;
     options.attribution = a;
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;

@@ -35,7 +35,9 @@ double estimate(const CarParameters& car, const std::string& body, const std::st
 TEST(ModalAnalysis, Table1FormulasReproduceTheReportsValues) {
     for (const char* name : {"70ton-loaded", "100ton-loaded", "70ton-empty"})
         for (const auto& e : calcTable1Estimates(makeCarParameters(name)))
-            if (e.reportHz > 0) EXPECT_NEAR(e.frequencyHz, e.reportHz, 0.015 * e.reportHz) << name << " " << e.body << " " << e.motion;
+            if (e.reportHz > 0) {
+                EXPECT_NEAR(e.frequencyHz, e.reportHz, 0.015 * e.reportHz) << name << " " << e.body << " " << e.motion;
+            }
 }
 
 TEST(ModalAnalysis, CarBodyModesAgainstTheUncoupledEstimates) {

@@ -29,7 +29,8 @@ TEST_P(StaticEquilibrium, AccelerationsVanishAndLoadsEqualWeightShares) {
     const CarParameters car = makeCarParameters(GetParam().car);
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
-    const auto model = makeRockingModel(GetParam().model, car, TrackInput(track), {16.5 * units::mph});
+    const auto model = makeRockingModel(GetParam().model, car, TrackInput(track),
+                                        ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}});
     const SimTK::State s = model->makeStaticState();
     model->getSystem().realize(s, SimTK::Stage::Acceleration);
     const SimTK::Vector& udot = s.getUDot();

@@ -276,8 +276,9 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
         }
     }
     for (const auto& e : fs::directory_iterator(out))
-        if (e.path().extension() == ".csv")
+        if (e.path().extension() == ".csv") {
             EXPECT_TRUE(listed.count(e.path().filename().string())) << e.path().filename() << " is not in validation.json";
+        }
     // Plots: each PNG's sidecar draws the expected columns, and its values are the CSV's.
     for (const auto& e : fs::directory_iterator(out)) {
         if (e.path().extension() != ".png") continue;
@@ -299,8 +300,9 @@ TEST(Validate, CommittedReportNamesAnExistingCommit) {
         << "REPORT.md does not name its commit";
     EXPECT_EQ(report.find("uncommitted changes"), std::string::npos) << "generated from a dirty tree";
     const std::string cmd = "git -C '" + kSource + "' cat-file -e " + m[1].str() + "^{commit} 2>/dev/null";
-    if (std::system(("git -C '" + kSource + "' rev-parse 2>/dev/null").c_str()) == 0)
+    if (std::system(("git -C '" + kSource + "' rev-parse 2>/dev/null").c_str()) == 0) {
         EXPECT_EQ(std::system(cmd.c_str()), 0) << "commit " << m[1] << " is not in this repository";
+    }
 }
 
 TEST(Validate, QuickRunWritesAReportWithEverySection) {
