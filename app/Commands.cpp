@@ -277,8 +277,8 @@ int modesCommand(const ModesOptions& o) {
     TrackSpec level = sc.track;
     level.amplitude = 0;
     level.measured.clear();
-    const auto model =
-        descriptor.makeMultibody(makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
+    const auto model = descriptor.makeMultibody(makeModalCar(sc.car), TrackInput(level),
+                                                ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}});
     const std::vector<Mode> modes = calcModes(*model);
     const std::vector<UncoupledEstimate> table1 = calcTable1Estimates(sc.car);
     auto findEstimate = [&](const Mode& m) -> const UncoupledEstimate* {

@@ -563,7 +563,8 @@ std::string makeModes() {
         level.amplitude = 0;
         for (const char* model : {"halfcar", "fullcar"}) {
             if (std::string(model) == "fullcar" && std::string(carName) != "70ton-loaded") continue;
-            const auto m = ModelRegistry::get().getModel(model).makeMultibody(makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry});
+            const auto m = ModelRegistry::get().getModel(model).makeMultibody(
+                makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}});
             const auto table1 = calcTable1Estimates(sc.car);
             for (const Mode& mode : calcModes(*m)) {
                 if (mode.body != "car body") continue;

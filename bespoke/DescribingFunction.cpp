@@ -431,7 +431,7 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
     }
     out.maxMultiplier = Phi.eigenvalues().cwiseAbs().maxCoeff();
     // The orbit found must be this solution's, not a neighbouring branch's.
-    const RunResult one = simulateEom(twin, {period, 400, accuracy}, y);
+    const RunResult one = simulateEom(twin, {period, 400, accuracy, RunLimits{}}, y);
     const int c = one.history.column("roll_deg");
     double lo = 1e9, hi = -1e9;
     for (const auto& row : one.history.samples) lo = std::min(lo, row[c]), hi = std::max(hi, row[c]);
@@ -444,7 +444,7 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
 double DescribingFunctionModel::calcTwinPersistence(const Eigen::VectorXd& x, double speedMph, int periods) const {
     const EomHalfCarModel twin = makeTwin(speedMph);
     const double period = 2 * kPi / calcOmega(speedMph);
-    const RunResult r = simulateEom(twin, {periods * period, 200, 1e-6}, makeTwinState(x, speedMph));
+    const RunResult r = simulateEom(twin, {periods * period, 200, 1e-6, RunLimits{}}, makeTwinState(x, speedMph));
     const int c = r.history.column("roll_deg");
     double lo = 1e9, hi = -1e9;
     for (const auto& row : r.history.samples)

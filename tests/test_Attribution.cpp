@@ -47,7 +47,7 @@ struct Static {
 
 Static makeStatic(const std::string& modelName, AttributionSwitches a) {
     Static out;
-    ModelOptions options{16.5 * units::mph};
+    ModelOptions options{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}};
     options.attribution = a;
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;

@@ -24,7 +24,7 @@ DescribingFunctionModel makeModel(double amplitudeIn) {
 /// Half peak-to-peak of car-body roll over the last 3 input periods of a long twin run.
 double runTwin(const DescribingFunctionModel& df, double speedMph, double duration) {
     const EomHalfCarModel twin = df.makeTwin(speedMph);
-    const RunResult r = simulateEom(twin, {duration, 200, 1e-5});
+    const RunResult r = simulateEom(twin, {duration, 200, 1e-5, RunLimits{}});
     const double period = 2 * 3.14159265358979323846 / df.calcOmega(speedMph);
     const int c = r.history.column("roll_deg");
     double lo = 1e9, hi = -1e9;

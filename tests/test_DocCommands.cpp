@@ -20,6 +20,7 @@
 //    parsed only: ROCKROLL_PARSE_ONLY=1 makes rockroll check the command line
 //    (flags, values, files) and exit 0 without running.
 #include "tests/CsvReader.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
@@ -182,8 +183,7 @@ TEST(DocCommands, ExtractionFindsInlineBlockAndWrappedCommands) {
 
 // The check can fail: a flag the CLI does not know is rejected in parse-only mode.
 TEST(DocCommands, ParseOnlyRejectsAnUnknownFlag) {
-    const fs::path dir = fs::path(ROCKROLL_BUILD_DIR) / "doc_commands" / "unknown_flag";
-    fs::remove_all(dir);
+    const fs::path dir = rockroll::test::makeTestTempDir();
     const Outcome bad = runRockroll(dir, "steady scenarios/70ton-loaded.toml --no-stability", true);
     EXPECT_EQ(bad.exitCode, 109) << bad.err;
     EXPECT_NE(bad.err.find("The following argument was not expected"), std::string::npos) << bad.err;
@@ -196,8 +196,7 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
     const auto commands = extractAll();
     // README's runnable examples alone are more than this; fewer means the extraction broke.
     ASSERT_GE(commands.size(), 8u);
-    const fs::path root = fs::path(ROCKROLL_BUILD_DIR) / "doc_commands" / "quoted";
-    fs::remove_all(root);
+    const fs::path root = rockroll::test::makeTestTempDir();
     int index = 0, ran = 0, parsed = 0, named = 0;
     for (const auto& c : commands) {
         SCOPED_TRACE(c.file + ":" + std::to_string(c.line) + ": " + c.text);

@@ -54,7 +54,9 @@ TEST(EnergyLaws, UnilateralContactDissipationIsNonNegativeAndZeroWhenOpen) {
         for (double rate : {-2.0, -0.3, -0.19, -1e-3, 0.0, 1e-3, 0.5}) {
             const double P = calcUnilateralContactDissipation(delta, rate, law);
             EXPECT_GE(P, 0.0) << delta << " " << rate;
-            if (delta <= 0) EXPECT_EQ(P, 0.0);
+            if (delta <= 0) {
+                EXPECT_EQ(P, 0.0);
+            }
             // Power balance of the element: f·δ̇ = dV/dt + P.
             const double f = calcUnilateralNormalForce(delta, rate, law);
             const double Vdot = (delta > 0 ? law.stiffness * delta : 0.0) * rate;
@@ -86,7 +88,9 @@ TEST(EnergyLaws, LateralSpringAndGibEnergyGiveTheForceAndTheGibDissipates) {
         for (double rate : {-0.5, -0.01, 0.0, 0.02, 0.4}) {
             const double D = calcLateralSpringDissipation(Y, rate, law);
             EXPECT_GE(D, 0.0) << Y << " " << rate;
-            if (std::abs(Y) <= law.gibClearance) EXPECT_EQ(D, 0.0) << "gib open";
+            if (std::abs(Y) <= law.gibClearance) {
+                EXPECT_EQ(D, 0.0) << "gib open";
+            }
             // f·Ẏ = dV/dt + P_diss.
             EXPECT_NEAR(calcLateralSpringForce(Y, rate, law) * rate, dV * rate + D,
                         1e-5 * (1 + std::abs(calcLateralSpringForce(Y, rate, law) * rate)));

@@ -1,5 +1,7 @@
 // What `rockroll run` does with a run that overturns, one that cannot finish,
 // and a rerun from its own summary — through the real command line.
+#include "tests/TestTmp.h"
+
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -11,12 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path makeTempDir(const std::string& name) {
-    const fs::path d = fs::path(ROCKROLL_TEST_TMP) / name;
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+fs::path makeTempDir() { return rockroll::test::makeTestTempDir(); }
 
 int runCli(const std::string& args, const fs::path& errFile) {
     const std::string cmd = std::string(ROCKROLL_BIN) + " " + args + " > /dev/null 2> '" + errFile.string() + "'";
@@ -34,7 +31,7 @@ std::string readFile(const fs::path& p) {
 const std::string kScenarios = ROCKROLL_SCENARIO_DIR;
 
 TEST(RunOutcome, FiftyInchCrossLevelOverturnsWithExitFiveAndKeepsTheHistory) {
-    const fs::path dir = makeTempDir("overturn");
+    const fs::path dir = makeTempDir();
     const int code = runCli("run " + kScenarios + "/70ton-loaded.toml --model halfcar --amplitude-in 50 --duration-s 20 "
                             "--out '" + (dir / "out").string() + "'",
                             dir / "err.txt");
@@ -55,7 +52,7 @@ TEST(RunOutcome, FiftyInchCrossLevelOverturnsWithExitFiveAndKeepsTheHistory) {
 }
 
 TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
-    const fs::path dir = makeTempDir("walltime");
+    const fs::path dir = makeTempDir();
     const int code = runCli("run " + kScenarios + "/70ton-loaded.toml --model fullcar --duration-s 20 --max-wall-s 0.3 "
                             "--out '" + (dir / "out").string() + "'",
                             dir / "err.txt");
@@ -64,7 +61,7 @@ TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
 }
 
 TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
-    const fs::path dir = makeTempDir("reproduce");
+    const fs::path dir = makeTempDir();
     // A scenario with a car override and a limit, and command-line overrides on top.
     std::string toml = readFile(kScenarios + "/70ton-loaded.toml");
     toml.replace(toml.find("[track]"), 7, "side_bearing_clearance = \"0.1875 in\"\nspring_vertical_rate = \"28 kN/mm\"\n\n[track]");
@@ -97,7 +94,7 @@ TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
 }
 
 TEST(RunOutcome, FromSummaryWithoutProvenanceIsABadInput) {
-    const fs::path dir = makeTempDir("badsummary");
+    const fs::path dir = makeTempDir();
     std::ofstream(dir / "summary.json") << R"({"model": "halfcar"})";
     EXPECT_EQ(runCli("run --from-summary '" + (dir / "summary.json").string() + "'", dir / "err.txt"), 2);
     EXPECT_NE(readFile(dir / "err.txt").find("provenance.scenario_toml"), std::string::npos);

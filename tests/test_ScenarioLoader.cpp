@@ -1,4 +1,5 @@
 #include "scenarios/ScenarioLoader.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
@@ -87,7 +88,7 @@ TEST(ScenarioLoader, ErrorsNameFileKeyValueAndExpectation) {
 }
 
 TEST(ScenarioLoader, CommandLineRejectsABadScenarioWithNonZeroExit) {
-    const std::string path = ::testing::TempDir() + "bad_scenario.toml";
+    const std::string path = (rockroll::test::makeTestTempDir() / "bad_scenario.toml").string();
     std::ofstream(path) << replace(kGood, "\"0.75 in\"", "\"0.75 parsecs\"");
     const std::string cmd = std::string(ROCKROLL_BIN) + " run " + path + " --json > /dev/null 2> " + path + ".err";
     const int status = std::system(cmd.c_str());

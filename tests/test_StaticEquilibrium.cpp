@@ -6,12 +6,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <ostream>
+#include <string>
+
 using namespace rockroll;
 
 namespace {
 struct Case {
     std::string model, car;
 };
+// How gtest prints a parameter (test listings, failures): the names, not the struct's bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.model << " " << c.car; }
 class StaticEquilibrium : public ::testing::TestWithParam<Case> {};
 
 double channel(const RockingModel& m, const std::vector<double>& v, const std::string& name) {
@@ -25,7 +31,8 @@ TEST_P(StaticEquilibrium, AccelerationsVanishAndLoadsEqualWeightShares) {
     const CarParameters car = makeCarParameters(GetParam().car);
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
-    const auto model = ModelRegistry::get().getModel(GetParam().model).makeMultibody(car, TrackInput(track), {16.5 * units::mph});
+    const auto model = ModelRegistry::get().getModel(GetParam().model).makeMultibody(
+        car, TrackInput(track), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}});
     const SimTK::State s = model->makeStaticState();
     model->getSystem().realize(s, SimTK::Stage::Acceleration);
     const SimTK::Vector& udot = s.getUDot();

@@ -3,6 +3,7 @@
 // CSV as an RFC 4180 table with its required columns by name, each JSON, and each
 // plot's sidecar (app/plots.py) against the CSV columns it says it drew.
 #include "tests/CsvReader.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
@@ -275,8 +276,9 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
         }
     }
     for (const auto& e : fs::directory_iterator(out))
-        if (e.path().extension() == ".csv")
+        if (e.path().extension() == ".csv") {
             EXPECT_TRUE(listed.count(e.path().filename().string())) << e.path().filename() << " is not in validation.json";
+        }
     // Plots: each PNG's sidecar draws the expected columns, and its values are the CSV's.
     for (const auto& e : fs::directory_iterator(out)) {
         if (e.path().extension() != ".png") continue;
@@ -298,13 +300,13 @@ TEST(Validate, CommittedReportNamesAnExistingCommit) {
         << "REPORT.md does not name its commit";
     EXPECT_EQ(report.find("uncommitted changes"), std::string::npos) << "generated from a dirty tree";
     const std::string cmd = "git -C '" + kSource + "' cat-file -e " + m[1].str() + "^{commit} 2>/dev/null";
-    if (std::system(("git -C '" + kSource + "' rev-parse 2>/dev/null").c_str()) == 0)
+    if (std::system(("git -C '" + kSource + "' rev-parse 2>/dev/null").c_str()) == 0) {
         EXPECT_EQ(std::system(cmd.c_str()), 0) << "commit " << m[1] << " is not in this repository";
+    }
 }
 
 TEST(Validate, QuickRunWritesAReportWithEverySection) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "rockroll_validate_quick";
-    std::filesystem::remove_all(out);
+    const std::filesystem::path out = rockroll::test::makeTestTempDir() / "out";
     const std::string cmd = std::string(ROCKROLL_BIN) + " validate --quick --out '" + out.string() + "' > /dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const std::string report = readFile((out / "REPORT.md").string());
@@ -347,9 +349,7 @@ TEST(Validate, CommittedResultsReadBack) {
 // The read-back checks can fail: a shifted header, a wrong column in a plot, or a
 // quick-run steady CSV that calls a solution stable.
 TEST(Validate, ReadBackChecksCatchWrongFiles) {
-    const fs::path dir = fs::path(ROCKROLL_BUILD_DIR) / "validate_readback_check";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = rockroll::test::makeTestTempDir();
     auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; };
     // The header that shifted every column on main.
     write("steady_70ton-loaded_0.75in.csv",

@@ -1,0 +1,77 @@
+# Test Install.ExampleBuildsAndRunsAgainstTheInstalledPackage: installs the build
+# tree into WORK_DIR/prefix, configures and builds examples/cpp against that prefix
+# alone (a Debug build: NDEBUG and C++17 must come from the package), and runs it
+# on the installed 70ton-loaded.toml.
+#   cmake -DBUILD_DIR=build -DSOURCE_DIR=. -DWORK_DIR=build/install_test -P tests/check_install.cmake
+cmake_minimum_required(VERSION 3.22)
+set(prefix ${WORK_DIR}/prefix)
+set(example ${WORK_DIR}/example)
+file(REMOVE_RECURSE ${WORK_DIR})
+
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n${ARGN}\n${out}\n${err}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+
+run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(f bin/rockroll include/mbmodel/CarParameters.h include/scenarios/ScenarioRun.h include/simbody/Simbody.h
+          share/rockroll/scenarios/70ton-loaded.toml lib/cmake/rockroll/rockrollConfig.cmake
+          lib/cmake/rockroll/rockrollConfigVersion.cmake)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "not installed: ${prefix}/${f}")
+  endif()
+endforeach()
+# The installed program runs from the prefix (its libraries found through its RPATH).
+run("installed rockroll --version" ${prefix}/bin/rockroll --version)
+message(STATUS "installed: ${out}")
+
+run("configure the example" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cpp -B ${example}
+  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+# rockroll::simbody carries Simbody's NDEBUG and C++17 (cxx_std_17: no -std flag
+# at all where the compiler's default is C++17; never C++20, simbody#710).
+file(READ ${example}/compile_commands.json cc)
+if(NOT cc MATCHES "-DNDEBUG|-UNDEBUG")
+  message(FATAL_ERROR "the example's compile command has no NDEBUG setting from rockroll::simbody:\n${cc}")
+endif()
+if(cc MATCHES "-std=[a-z]+\\+\\+(2a|20|2b|23)")
+  message(FATAL_ERROR "the example compiles as C++20 or later, which Simbody 3.7's headers do not support:\n${cc}")
+endif()
+file(READ ${prefix}/lib/cmake/rockroll/rockrollTargets.cmake targets)
+if(NOT targets MATCHES "INTERFACE_COMPILE_FEATURES \"cxx_std_17\"")
+  message(FATAL_ERROR "rockroll::simbody does not carry cxx_std_17")
+endif()
+run("build the example" ${CMAKE_COMMAND} --build ${example})
+run("run the example" ${example}/max_roll ${prefix}/share/rockroll/scenarios/70ton-loaded.toml)
+message(STATUS "${out}")
+if(NOT out MATCHES "2\\.0 s simulated: max roll ([0-9]+\\.[0-9]+) deg")
+  message(FATAL_ERROR "unexpected output: ${out}")
+endif()
+set(example_roll ${CMAKE_MATCH_1})
+if(example_roll LESS_EQUAL 0.1 OR example_roll GREATER 10)
+  message(FATAL_ERROR "max roll ${example_roll} deg is not the 70-ton car rocking")
+endif()
+
+# The installed program gives the same run.
+run("installed rockroll run" ${prefix}/bin/rockroll run ${prefix}/share/rockroll/scenarios/70ton-loaded.toml
+  --duration-s 2 --json --out ${WORK_DIR}/cli)
+string(JSON cli_roll GET "${out}" max_roll_deg)
+# Both in micro-degrees (CMake has integer arithmetic only).
+function(micro var value)
+  if(NOT value MATCHES "^([0-9]+)\\.([0-9]*)")
+    message(FATAL_ERROR "not a decimal: ${value}")
+  endif()
+  string(SUBSTRING "${CMAKE_MATCH_2}000000" 0 6 frac)
+  math(EXPR m "${CMAKE_MATCH_1} * 1000000 + 1${frac} - 1000000")
+  set(${var} ${m} PARENT_SCOPE)
+endfunction()
+micro(a ${example_roll})
+micro(b ${cli_roll})
+math(EXPR d "${a} - ${b}")
+if(d GREATER 51 OR d LESS -51)
+  message(FATAL_ERROR "the example's max roll ${example_roll} deg differs from rockroll run's ${cli_roll} deg")
+endif()
+message(STATUS "rockroll run: max_roll_deg ${cli_roll}")
