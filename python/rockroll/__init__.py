@@ -36,20 +36,17 @@ __all__ = [
     "ScenarioError", "NumericalFailure", "scenario_keys", "channel_unit", "__version__",
 ]
 
-# Unit of each history channel, from the last part of its name (docs/model.md, "Outputs");
-# the wedge slip flags (1 = slipping) are dimensionless, unit "1".
+# Unit of each history channel, from the last part of its name (docs/model.md, "Outputs").
+# Channels without a unit part are dimensionless, unit "1": the wedge slip flags
+# (1 = slipping), the reduced model's truck_support_mode code and truck_mode_consistent flag.
 _UNIT_SUFFIXES = {"s": "s", "deg": "deg", "in": "in", "lb": "lb", "J": "J"}
 
 
 def channel_unit(name):
-    """The unit of a history channel (the unit its name ends with): 's', 'deg', 'in',
-    'lb' (pound-force), 'J', or '1' (dimensionless: a slip flag). ValueError otherwise."""
-    suffix = name.rsplit("_", 1)[-1]
-    if suffix in _UNIT_SUFFIXES and "_" in name:
-        return _UNIT_SUFFIXES[suffix]
-    if "_slip_" in name:
-        return "1"
-    raise ValueError(f"history channel {name!r} does not end with a known unit ({', '.join(_UNIT_SUFFIXES)})")
+    """The unit of a history channel, as its name ends: 's', 'deg', 'in', 'lb'
+    (pound-force) or 'J'; '1' (dimensionless) for a name without one of them."""
+    parts = name.rsplit("_", 1)
+    return _UNIT_SUFFIXES.get(parts[-1], "1") if len(parts) == 2 else "1"
 
 
 def _value_text(key, value):

@@ -33,11 +33,12 @@ def cli_json(cli):
 
 def without_run_specifics(j):
     """A summary (or any command's JSON) without what differs between two identical runs:
-    wall time and the command line that produced it."""
+    wall time and the command line that produced it (and the git commit, which is "-dirty"
+    for a target built before a commit and another after it)."""
     if isinstance(j, list):
         return [without_run_specifics(x) for x in j]
     j = dict(j)
     j.pop("wall_time_s", None)
     if "provenance" in j:
-        j["provenance"] = {k: v for k, v in j["provenance"].items() if k != "command"}
+        j["provenance"] = {k: v for k, v in j["provenance"].items() if k not in ("command", "git_commit")}
     return j

@@ -27,11 +27,13 @@ def test_readme_python_uses_run(tmp_path):
     assert scripts and shell, "README.md quotes no Python use"
     for name in ("scenarios", "examples"):
         (tmp_path / name).symlink_to(SOURCE_DIR / name)
+    env = dict(os.environ)  # PYTHONPATH made absolute: the commands run in tmp_path
+    env["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p)
     for script in scripts:
-        p = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True, text=True)
+        p = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True, text=True, env=env)
         assert p.returncode == 0, f"{script}\n{p.stderr}"
         assert p.stdout
     for line in shell:
         command = f"{sys.executable} {line[len(PREFIX):]}"
-        p = subprocess.run(command, shell=True, cwd=tmp_path, capture_output=True, text=True)
+        p = subprocess.run(command, shell=True, cwd=tmp_path, capture_output=True, text=True, env=env)
         assert p.returncode == 0, f"{line}\n{p.stderr}"

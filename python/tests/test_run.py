@@ -55,6 +55,8 @@ def test_every_model_runs_with_every_channel_in_a_unit(model):
     r = rockroll.run(LOADED, model=model, duration_s=0.5)
     assert r.summary["model"] == model
     assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "1"}
+    # Dimensionless channels are flags and codes only; everything else names its unit.
+    assert all("_slip_" in n or n.startswith("truck_") for n, u in r.units.items() if u == "1"), r.units
     assert len(r.history) > 100
 
 
