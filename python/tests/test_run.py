@@ -111,3 +111,19 @@ def test_bad_run_options_are_value_errors():
         rockroll.run(sc, duration_s=0)
     with pytest.raises(ValueError, match="speed_mph"):
         rockroll.run(sc, speed_mph=-1)
+
+
+def test_overrides_are_in_provenance_and_come_back_from_a_summary(tmp_path):
+    import json
+    sc = rockroll.load(LOADED, side_bearing_clearance="0.25 in", **{"run.model": "halfcar"})
+    r = rockroll.run(sc, duration_s=0.5)
+    prov = r.summary["provenance"]
+    assert prov["overrides"] == [{"key": "car.side_bearing_clearance", "value": "0.25 in"},
+                                 {"key": "run.model", "value": "halfcar"}]
+    assert prov["car_overrides"] == {"side_bearing_clearance": "0.25 in"}
+    path = tmp_path / "summary.json"
+    path.write_text(json.dumps(r.summary))
+    again = rockroll.from_summary(path)
+    assert again.overrides == sc.overrides
+    rerun = rockroll.run(again, duration_s=0.5)
+    assert np.array_equal(rerun.history.view(np.float64), r.history.view(np.float64))
