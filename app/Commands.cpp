@@ -1,4 +1,5 @@
 #include "app/Commands.h"
+#include "app/CommandResults.h"
 #include "app/Output.h"
 #include "app/Provenance.h"
 
@@ -85,8 +86,7 @@ int runCommand(const RunOptions& o) {
     const std::string stem = fs::path(o.fromSummary ? sc.source : o.scenario).stem().string();
     const fs::path dir = o.outDir.empty() ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir);
     fs::create_directories(dir);
-    nlohmann::ordered_json j = toJson(run.summary);
-    j["provenance"] = makeProvenance(sc, getCommandLine());
+    const nlohmann::ordered_json j = makeRunJson(run, sc, getCommandLine());
     writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
     writeAtomically(dir / "summary.json", [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 
@@ -107,73 +107,15 @@ int runCommand(const RunOptions& o) {
 int steadyCommand(const SteadyOptions& o) {
     Scenario sc = loadScenarioFile(o.scenario);
     if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
-    if (!(o.toMph > o.fromMph)) throw std::invalid_argument("--to-mph must exceed --from-mph");
-    const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
-                                                                        sc.track.railLength);
-    const DescribingFunctionModel model(sc.car, C, sc.track.railLength);
-    ContinuationSettings settings;
-    settings.fromMph = o.fromMph;
-    settings.toMph = o.toMph;
-    settings.stability = o.stabilityMethod == "floquet" ? StabilityMethod::Floquet
-                         : o.stabilityMethod == "none"  ? StabilityMethod::None
-                                                        : StabilityMethod::FoldRule;
-    const auto branches = model.trace(settings);
-    if (branches.empty()) throw std::runtime_error(fmt::format("no harmonic-balance solution found at {} mph", o.fromMph));
-
-    const std::string inputNote = fmt::format(
-        "sinusoidal cross-level of amplitude {:.4f} in: the fundamental harmonic 8A/(3 pi) cos(pi wheelbase/L_r) "
-        "of the {:.3f} in rectified-sine cross-level averaged over the wheelbase",
-        C / units::inch, sc.track.amplitude / units::inch);
+    const SteadyResult r = calcSteady(sc, o);
     if (o.json) {
-        nlohmann::ordered_json j;
-        j["car"] = sc.car.name;
-        j["amplitude_in"] = sc.track.amplitude / units::inch;
-        j["input_amplitude_in"] = C / units::inch;
-        j["input"] = inputNote;
-        j["model"] = "describing function (half car, report 4.1 simplifications)";
-        j["stability"] = o.stabilityMethod == "floquet"
-                             ? "Floquet multipliers of the time-domain twin's periodic orbit at every point"
-                         : o.stabilityMethod == "none"
-                             ? "not computed"
-                             : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
-                               "at the stretch's middle point";
-        j["provenance"] = makeProvenance(sc, getCommandLine());
-        j["provenance"]["model"] = "describing function";  // the scenario's [run] model is not used here
-        j["branches"] = nlohmann::ordered_json::array();
-        for (const auto& b : branches) {
-            nlohmann::ordered_json jb;
-            // null, never true, when nothing decided it (--stability none, or no evidence).
-            jb["stable"] = b.stability == Stability::NotComputed ? nlohmann::ordered_json(nullptr)
-                                                                  : nlohmann::ordered_json(b.stability == Stability::Stable);
-            jb["stability"] = b.stability == Stability::Stable     ? "stable"
-                              : b.stability == Stability::Unstable ? "unstable"
-                                                                   : "not computed";
-            jb["points"] = nlohmann::ordered_json::array();
-            for (const auto& p : b.points)
-                jb["points"].push_back({{"speed_mph", p.speedMph},
-                                        {"roll_amplitude_deg", p.rollAmplitudeDeg},
-                                        {"wheel_lift_fraction", p.wheelLiftFraction},
-                                        {"max_wheel_load_lb", p.maxWheelLoadLb},
-                                        {"max_side_bearing_load_lb", p.maxSideBearingLoadLb},
-                                        {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
-                                        {"folds_before", p.foldsBefore},
-                                        {"floquet_converged", p.floquetConverged},
-                                        {"stability_evidence", p.stabilityEvidence},
-                                        {"twin_persistence", std::isfinite(p.twinPersistence) && p.twinPersistence > 0
-                                                                 ? nlohmann::ordered_json(p.twinPersistence)
-                                                                 : nlohmann::ordered_json(nullptr)},
-                                        {"max_floquet_multiplier",
-                                         std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
-                                                                               : nlohmann::ordered_json(nullptr)}});
-            j["branches"].push_back(jb);
-        }
-        fmt::print("{}\n", j.dump());
+        fmt::print("{}\n", makeSteadyJson(r, sc, o, getCommandLine()).dump());
         return 0;
     }
-    fmt::print("rockroll steady — describing function, {} car\ninput: {}\n\n", sc.car.name, inputNote);
+    fmt::print("rockroll steady — describing function, {} car\ninput: {}\n\n", sc.car.name, r.inputNote);
     fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>14}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
                "side brg lb", "|mu|max", "stable");
-    for (const auto& b : branches)
+    for (const auto& b : r.branches)
         for (const auto& p : b.points)
             fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>14}\n", p.speedMph, p.rollAmplitudeDeg,
                        p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
@@ -182,28 +124,9 @@ int steadyCommand(const SteadyOptions& o) {
 }
 
 int sweepCommand(const SweepOptions& o) {
-    std::vector<SweepSpec> specs;
-    for (const std::string& file : o.scenarios) {
-        Scenario base = loadScenarioFile(file);
-        if (o.model) base.model = *o.model;
-        if (o.durationS) base.run.duration = *o.durationS;
-        if (o.maxWallS) base.run.limits.maxWallTime = *o.maxWallS;
-        std::vector<double> amplitudes = o.amplitudesIn;
-        if (amplitudes.empty()) amplitudes.push_back(base.track.amplitude / units::inch);
-        for (double a : amplitudes)
-            for (const char* dir : {"up", "down"}) {
-                if (o.direction != "both" && o.direction != dir) continue;
-                SweepSpec s;
-                s.scenario = base;
-                s.scenario.track.amplitude = a * units::inch;
-                s.fromMph = o.fromMph;
-                s.toMph = o.toMph;
-                s.stepMph = o.stepMph;
-                s.direction = std::string(dir) == "up" ? SweepDirection::Up : SweepDirection::Down;
-                s.fresh = o.fresh;
-                specs.push_back(s);
-            }
-    }
+    std::vector<Scenario> bases;
+    for (const std::string& file : o.scenarios) bases.push_back(loadScenarioFile(file));
+    const std::vector<SweepSpec> specs = makeSweepSpecs(bases, o);
     size_t total = 0, done = 0, failed = 0;
     for (const auto& s : specs) total += getSweepSpeeds(s).size();
     auto progress = [&](const SweepPoint& p) {
@@ -219,29 +142,7 @@ int sweepCommand(const SweepOptions& o) {
 
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (size_t i = 0; i < specs.size(); ++i)
-        for (const SweepPoint& p : results[i]) {
-            nlohmann::ordered_json j;
-            if (p.failed) {
-                j["model"] = specs[i].scenario.model;
-                j["car"] = specs[i].scenario.car.name;
-                j["speed_mph"] = p.speedMph;
-                j["amplitude_in"] = specs[i].scenario.track.amplitude / units::inch;
-                j["failed"] = true;
-                j["error"] = p.error;
-            } else {
-                j = toJson(p.summary);
-                j["failed"] = false;
-            }
-            j["direction"] = p.direction;
-            j["start"] = p.start;
-            Scenario at = specs[i].scenario;
-            at.speed = p.speedMph * units::mph;
-            j["provenance"] = makeProvenance(at, getCommandLine());
-            j["provenance"]["sweep"] = {{"from_mph", specs[i].fromMph}, {"to_mph", specs[i].toMph},
-                                        {"step_mph", specs[i].stepMph}, {"direction", p.direction},
-                                        {"fresh", specs[i].fresh}, {"ramp_time_s", specs[i].rampTime}};
-            all.push_back(j);
-        }
+        for (const SweepPoint& p : results[i]) all.push_back(makeSweepPointJson(specs[i], p, getCommandLine()));
     if (o.json) {
         fmt::print("{}\n", all.dump());
     } else {
@@ -270,55 +171,17 @@ int sweepCommand(const SweepOptions& o) {
 int modesCommand(const ModesOptions& o) {
     Scenario sc = loadScenarioFile(o.scenario);
     if (o.model) sc.model = *o.model;
-    const ModelDescriptor& descriptor = ModelRegistry::get().getModel(sc.model);
-    if (!descriptor.isMultibody())
-        throw ScenarioError(fmt::format("{}: modes need a Simbody model with truck masses: {}, not \"{}\"", sc.source,
-                                        fmt::join(ModelRegistry::get().getMultibodyNames(), " or "), sc.model));
-    TrackSpec level = sc.track;
-    level.amplitude = 0;
-    level.measured.clear();
-    const auto model = descriptor.makeMultibody(makeModalCar(sc.car), TrackInput(level),
-                                                ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}});
-    const std::vector<Mode> modes = calcModes(*model);
-    const std::vector<UncoupledEstimate> table1 = calcTable1Estimates(sc.car);
-    auto findEstimate = [&](const Mode& m) -> const UncoupledEstimate* {
-        const std::string& base = m.body;
-        std::string motion = m.motion;
-        if (motion == "sway-roll") motion = m.name.find("lower") != std::string::npos ? "roll" : "sway";
-        for (const auto& e : table1)
-            if (e.body == base && e.motion == motion) return &e;
-        return nullptr;
-    };
+    const ModesResult r = calcScenarioModes(sc);
     if (o.json) {
-        nlohmann::ordered_json j;
-        j["model"] = sc.model;
-        j["car"] = sc.car.name;
-        j["linearization"] = "about static equilibrium, every contact closed, Coulomb friction removed";
-        j["provenance"] = makeProvenance(sc, getCommandLine());
-        j["modes"] = nlohmann::ordered_json::array();
-        for (const Mode& m : modes) {
-            nlohmann::ordered_json jm{{"name", m.name},           {"frequency_hz", m.frequencyHz},
-                                      {"damping_ratio", m.dampingRatio}, {"body", m.body},
-                                      {"motion", m.motion},       {"energy_share", m.energyShare}};
-            if (const auto* e = findEstimate(m)) {
-                jm["table1_formula_hz"] = e->frequencyHz;
-                jm["table1_report_hz"] = e->reportHz > 0 ? nlohmann::ordered_json(e->reportHz) : nlohmann::ordered_json(nullptr);
-            }
-            j["modes"].push_back(jm);
-        }
-        j["table1"] = nlohmann::ordered_json::array();
-        for (const auto& e : table1)
-            j["table1"].push_back({{"body", e.body}, {"motion", e.motion}, {"formula_hz", e.frequencyHz},
-                                   {"report_hz", e.reportHz > 0 ? nlohmann::ordered_json(e.reportHz) : nlohmann::ordered_json(nullptr)}});
-        fmt::print("{}\n", j.dump());
+        fmt::print("{}\n", makeModesJson(r, sc, getCommandLine()).dump());
         return 0;
     }
     fmt::print("rockroll modes — {} model, {} car: linearized about static equilibrium, every contact closed,\n"
                "Coulomb friction removed; beside the report's Table 1 uncoupled estimates\n\n",
                sc.model, sc.car.name);
     fmt::print("{:<34}{:>10}{:>10}{:>10}{:>18}{:>16}\n", "mode", "f Hz", "zeta", "share", "Table 1 formula", "Table 1 report");
-    for (const Mode& m : modes) {
-        const auto* e = findEstimate(m);
+    for (const Mode& m : r.modes) {
+        const auto* e = r.findEstimate(m);
         fmt::print("{:<34}{:>10.3f}{:>10.3f}{:>10.2f}{:>18}{:>16}\n", m.name, m.frequencyHz, m.dampingRatio, m.energyShare,
                    e ? fmt::format("{:.2f}", e->frequencyHz) : "", e && e->reportHz > 0 ? fmt::format("{:.2f}", e->reportHz) : "");
     }

@@ -1,6 +1,8 @@
 #pragma once
-// Output helpers shared by the sub-commands: run summaries as JSON, time
-// histories as CSV, and files written through a temporary name.
+// Output helpers shared by the sub-commands: run summaries as JSON (toJson, in
+// app/SummaryJson.h, library rr_report), time histories as CSV, and files written
+// through a temporary name.
+#include "app/SummaryJson.h"
 #include "mbmodel/RunSummary.h"
 #include "mbmodel/TimeHistory.h"
 
@@ -12,8 +14,6 @@
 #include <vector>
 
 namespace rockroll::app {
-
-nlohmann::ordered_json toJson(const RunSummary& s);
 
 /// Writes through a temporary name and renames when complete, so a reader never
 /// sees a half-written file.

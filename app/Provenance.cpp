@@ -42,6 +42,10 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
     nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
     for (const auto& [key, text] : sc.carOverrides) overrides[key] = text;
     p["car_overrides"] = overrides;
+    // KEY=VALUE overrides applied on top of the scenario file, in order (scenario_toml has their effect).
+    nlohmann::ordered_json applied = nlohmann::ordered_json::array();
+    for (const auto& [key, text] : sc.overrides) applied.push_back({{"key", key}, {"value", text}});
+    p["overrides"] = applied;
     nlohmann::ordered_json params = nlohmann::ordered_json::object();
     for (const CarParameterInfo& info : getCarParameterTable()) {
         const double si = sc.car.*(info.member);
@@ -79,6 +83,12 @@ Scenario loadScenarioFromSummary(const std::string& path) {
     if (prov->contains("car_overrides") && (*prov)["car_overrides"].is_object())
         for (const auto& [key, text] : (*prov)["car_overrides"].items())
             sc.carOverrides.emplace_back(key, text.is_string() ? text.get<std::string>() : text.dump());
+    sc.overrides.clear();
+    if (prov->contains("overrides") && (*prov)["overrides"].is_array())
+        for (const auto& o : (*prov)["overrides"])
+            if (o.is_object() && o.contains("key") && o.contains("value") && o["key"].is_string() &&
+                o["value"].is_string())
+                sc.overrides.emplace_back(o["key"].get<std::string>(), o["value"].get<std::string>());
     return sc;
 }
 

@@ -336,10 +336,108 @@ void readAttribution(const toml::table& root, const std::string& src, Scenario& 
 
 }  // namespace
 
-Scenario parseScenario(std::string_view text, const std::string& source) {
-    const toml::table root = parseToml(text, source);
+const std::vector<std::string>& getScenarioKeys() {
+    static const std::vector<std::string> keys = [] {
+        // Every key the read* functions above accept, table by table. The test
+        // ScenarioOverrides.SchemaIsWhatTheLoaderReadsAndTheWriterWrites keeps this list,
+        // the readers and formatScenarioToml in step.
+        std::vector<std::string> k{"description", "car.base", "car.file", "car.name"};
+        for (const CarParameterInfo& info : getCarParameterTable()) k.push_back(std::string("car.") + info.key);
+        for (const char* key :
+             {"track.amplitude", "track.rail_length", "track.rails", "track.mirror", "track.entry", "run.speed",
+              "run.duration", "run.model", "run.output_rate", "run.filter_cutoff", "integrator.method",
+              "integrator.accuracy", "integrator.max_step", "eom.linear_springs", "eom.lock_bolster_lateral",
+              "eom.elastic_contacts", "eom.equal_lateral_shares", "eom.small_angles", "limits.enabled",
+              "limits.flange_height", "limits.flange_clearance", "limits.wheels_off_time", "limits.rollover_angle",
+              "limits.energy_runaway_fraction", "limits.max_wall_time", "limits.severe_separation",
+              "reduced.truck_weight", "attribution.truck_gravity", "attribution.truck_mass_scale"})
+            k.push_back(key);
+        return k;
+    }();
+    return keys;
+}
+
+namespace {
+std::string_view trim(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string_view::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+std::string joinKeys(const std::vector<std::string>& keys, const char* separator) {
+    std::string out;
+    for (const auto& k : keys) out += (out.empty() ? "" : separator) + k;
+    return out;
+}
+}  // namespace
+
+ScenarioOverride parseScenarioOverride(std::string_view text) {
+    const auto eq = text.find('=');
+    if (eq == std::string_view::npos || trim(text.substr(0, eq)).empty())
+        throw ScenarioError(fmt::format("override '{}': expected KEY=VALUE, e.g. car.side_bearing_clearance=0.25 in",
+                                        text));
+    return {std::string(trim(text.substr(0, eq))), std::string(trim(text.substr(eq + 1)))};
+}
+
+std::string resolveScenarioKey(const std::string& key, OverrideKeys mode, const std::vector<std::string>& keys) {
+    for (const auto& k : keys)
+        if (k == key) return k;
+    std::vector<std::string> named;
+    if (mode == OverrideKeys::AllowBare && key.find('.') == std::string::npos)
+        for (const auto& k : keys) {
+            const auto dot = k.rfind('.');
+            if ((dot == std::string::npos ? k : k.substr(dot + 1)) == key) named.push_back(k);
+        }
+    if (named.size() == 1) return named.front();
+    if (named.size() > 1)
+        throw ScenarioError(fmt::format("override key '{}' is ambiguous: it names {}; give the full key", key,
+                                        joinKeys(named, " and ")));
+    throw ScenarioError(fmt::format("override key '{}': no such scenario key; accepted keys: {}{}", key,
+                                    joinKeys(keys, ", "),
+                                    mode == OverrideKeys::AllowBare
+                                        ? " (or the last part of one of them alone, when it names only that key)"
+                                        : ""));
+}
+
+namespace {
+/// `root` with `overrides` applied: each value text becomes the TOML value it spells, or a string.
+void applyOverrides(toml::table& root, const std::vector<ScenarioOverride>& overrides, OverrideKeys mode,
+                    const std::string& source, Scenario& sc) {
+    for (const ScenarioOverride& o : overrides) {
+        const std::string key = resolveScenarioKey(o.key, mode);
+        const auto dot = key.find('.');
+        toml::table* table = &root;
+        if (dot != std::string::npos) {
+            const std::string name = key.substr(0, dot);
+            if (!root.contains(name)) root.insert(name, toml::table{});
+            table = root.get(name)->as_table();
+            if (!table) throw ScenarioError(fmt::format("{}: key '{}' must be a table [{}]", source, name, name));
+        }
+        const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
+        bool placed = false;
+        try {
+            const toml::table parsed = toml::parse("v = " + o.value);
+            const toml::node* v = parsed.get("v");
+            if (parsed.size() == 1 && v) {
+                v->visit([&](const auto& node) { table->insert_or_assign(leaf, node); });
+                placed = true;
+            }
+        } catch (const toml::parse_error&) {
+        }
+        if (!placed) table->insert_or_assign(leaf, o.value);
+        sc.overrides.emplace_back(key, o.value);
+    }
+}
+}  // namespace
+
+Scenario parseScenario(std::string_view text, const std::string& source) { return parseScenario(text, source, {}); }
+
+Scenario parseScenario(std::string_view text, const std::string& source, const std::vector<ScenarioOverride>& overrides,
+                       OverrideKeys mode) {
+    toml::table root = parseToml(text, source);
     Scenario sc;
     sc.source = source;
+    applyOverrides(root, overrides, mode, source, sc);
     TableReader top(&root, source, "");
     sc.description = top.getText("description", "");
     readCar(root, source, sc);
@@ -354,9 +452,11 @@ Scenario parseScenario(std::string_view text, const std::string& source) {
     return sc;
 }
 
-Scenario loadScenarioFile(const std::string& path) {
+Scenario loadScenarioFile(const std::string& path) { return loadScenarioFile(path, {}); }
+
+Scenario loadScenarioFile(const std::string& path, const std::vector<ScenarioOverride>& overrides, OverrideKeys mode) {
     const std::string text = readFile(path, "scenario file");
-    Scenario sc = parseScenario(text, path);
+    Scenario sc = parseScenario(text, path, overrides, mode);
     sc.sourceSha256 = calcSha256(text);
     return sc;
 }

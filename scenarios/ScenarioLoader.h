@@ -20,6 +20,9 @@ struct Scenario {
     std::string sourceSha256;    ///< SHA-256 of the scenario file's bytes (hex)
     /// [car] parameters given in the file, key → the text given (e.g. "0.25 in").
     std::vector<std::pair<std::string, std::string>> carOverrides;
+    /// Overrides applied on top of the file (applyScenarioOverrides), in the order given:
+    /// full dotted key → the value text given (e.g. {"car.side_bearing_clearance", "0.25 in"}).
+    std::vector<std::pair<std::string, std::string>> overrides;
     std::string description;
     CarParameters car;
     TrackSpec track;
@@ -39,7 +42,42 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// One `KEY=VALUE` override of a scenario key, applied to the parsed TOML before the
+/// scenario is read, so it goes through exactly the validation (and error messages)
+/// of the same key written in the file. `key` is a full dotted key
+/// ("car.side_bearing_clearance", "run.speed", "description"), or, where the caller
+/// allows it, a bare key naming exactly one key of the schema ("side_bearing_clearance").
+/// `value` is text: read as a TOML value when it is one (1e-4, true, 4, "quoted"),
+/// otherwise as a string (0.25 in, 16.5 mph, halfcar).
+struct ScenarioOverride {
+    std::string key;
+    std::string value;
+};
+
+enum class OverrideKeys { FullOnly, AllowBare };
+
+/// "KEY=VALUE" (spaces around either are trimmed); ScenarioError without an '=' or a key.
+ScenarioOverride parseScenarioOverride(std::string_view keyEqualsValue);
+
+/// Every key a scenario file accepts as a value, dotted, in schema order: "description",
+/// "car.base", "car.<parameter>" (getCarParameterTable()), "track.amplitude", ...
+/// ([[track.measured]] rows are not single keys and are not listed.)
+const std::vector<std::string>& getScenarioKeys();
+
+/// The full key `key` names among `keys`: itself when it is one of them, or (AllowBare)
+/// the one key whose last part it is. ScenarioError naming `key` and listing `keys`
+/// when it names none, or naming the candidates when it names several.
+std::string resolveScenarioKey(const std::string& key, OverrideKeys mode,
+                               const std::vector<std::string>& keys = getScenarioKeys());
+
+/// Parses `tomlText`, applies `overrides` in order (a later one wins), then reads the
+/// scenario as parseScenario does; the scenario records them in `overrides`.
+Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
+                       const std::vector<ScenarioOverride>& overrides, OverrideKeys mode = OverrideKeys::FullOnly);
+
 Scenario loadScenarioFile(const std::string& path);
+Scenario loadScenarioFile(const std::string& path, const std::vector<ScenarioOverride>& overrides,
+                          OverrideKeys mode = OverrideKeys::FullOnly);
 
 /// Cars as data (scenarios/cars/*.toml): `name`, `description` and a [parameters]
 /// table giving every car parameter as { value = "<number> <unit>", source = "..." }.

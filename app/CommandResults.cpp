@@ -1,0 +1,225 @@
+#include "app/CommandResults.h"
+
+#include "app/Provenance.h"
+#include "scenarios/ModelRegistry.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <stdexcept>
+
+namespace rockroll::app {
+
+nlohmann::ordered_json toJson(const RunSummary& s) {
+    nlohmann::ordered_json j;
+    j["model"] = s.model;
+    j["car"] = s.car;
+    j["speed_mph"] = s.speedMph;
+    j["amplitude_in"] = s.amplitudeIn;
+    j["duration_s"] = s.durationS;
+    j["max_roll_deg"] = s.maxRollDeg;
+    j["steady_roll_amplitude_deg"] = s.steadyRollAmplitudeDeg;
+    j["peak_to_peak_roll_deg"] = s.peakToPeakRollDeg;
+    j["max_wheel_lift_in"] = s.maxWheelLiftIn;
+    j["max_wheel_load_lb"] = s.maxWheelLoadLb;
+    j["min_wheel_load_ratio"] = s.minWheelLoadRatio;
+    j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
+    j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
+    j["raw_max_wheel_load_lb"] = s.rawMaxWheelLoadLb;
+    j["raw_min_wheel_load_ratio"] = s.rawMinWheelLoadRatio;
+    j["raw_max_side_bearing_load_lb"] = s.rawMaxSideBearingLoadLb;
+    j["raw_max_center_plate_load_lb"] = s.rawMaxCenterPlateLoadLb;
+    j["static_wheel_load_lb"] = s.staticWheelLoadLb;
+    j["static_center_plate_load_lb"] = s.staticCenterPlateLoadLb;
+    j["regime"] = s.regime;
+    j["stopped_at_s"] = s.stoppedAtS >= 0 ? nlohmann::ordered_json(s.stoppedAtS) : nlohmann::ordered_json(nullptr);
+    j["stop_reason"] = s.stopReason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.stopReason);
+    j["center_plate_separation_longest_s"] = s.centerPlateSeparationLongestS;
+    j["center_plate_separation_total_s"] = s.centerPlateSeparationTotalS;
+    j["wheel_lift_longest_s"] = s.wheelLiftLongestS;
+    j["energy_balance_error"] = std::isfinite(s.energyBalanceError) ? nlohmann::ordered_json(s.energyBalanceError)
+                                                                    : nlohmann::ordered_json(nullptr);
+    j["filter"] = s.filter;
+    j["sim_time_s"] = s.simTimeS;
+    j["wall_time_s"] = s.wallTimeS;
+    j["steps"] = s.steps;
+    return j;
+}
+
+nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command) {
+    nlohmann::ordered_json j = toJson(run.summary);
+    j["provenance"] = makeProvenance(sc, command);
+    return j;
+}
+
+std::vector<SweepSpec> makeSweepSpecs(const std::vector<Scenario>& bases, const SweepOptions& o) {
+    std::vector<SweepSpec> specs;
+    for (Scenario base : bases) {
+        if (o.model) base.model = *o.model;
+        if (o.durationS) base.run.duration = *o.durationS;
+        if (o.maxWallS) base.run.limits.maxWallTime = *o.maxWallS;
+        std::vector<double> amplitudes = o.amplitudesIn;
+        if (amplitudes.empty()) amplitudes.push_back(base.track.amplitude / units::inch);
+        for (double a : amplitudes)
+            for (const char* dir : {"up", "down"}) {
+                if (o.direction != "both" && o.direction != dir) continue;
+                SweepSpec s;
+                s.scenario = base;
+                s.scenario.track.amplitude = a * units::inch;
+                s.fromMph = o.fromMph;
+                s.toMph = o.toMph;
+                s.stepMph = o.stepMph;
+                s.direction = std::string(dir) == "up" ? SweepDirection::Up : SweepDirection::Down;
+                s.fresh = o.fresh;
+                specs.push_back(s);
+            }
+    }
+    return specs;
+}
+
+nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoint& p, const std::string& command) {
+    nlohmann::ordered_json j;
+    if (p.failed) {
+        j["model"] = spec.scenario.model;
+        j["car"] = spec.scenario.car.name;
+        j["speed_mph"] = p.speedMph;
+        j["amplitude_in"] = spec.scenario.track.amplitude / units::inch;
+        j["failed"] = true;
+        j["error"] = p.error;
+    } else {
+        j = toJson(p.summary);
+        j["failed"] = false;
+    }
+    j["direction"] = p.direction;
+    j["start"] = p.start;
+    Scenario at = spec.scenario;
+    at.speed = p.speedMph * units::mph;
+    j["provenance"] = makeProvenance(at, command);
+    j["provenance"]["sweep"] = {{"from_mph", spec.fromMph}, {"to_mph", spec.toMph},
+                                {"step_mph", spec.stepMph}, {"direction", p.direction},
+                                {"fresh", spec.fresh}, {"ramp_time_s", spec.rampTime}};
+    return j;
+}
+
+SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
+    if (!(o.toMph > o.fromMph)) throw std::invalid_argument("--to-mph must exceed --from-mph");
+    SteadyResult r;
+    const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
+                                                                        sc.track.railLength);
+    r.inputAmplitude = C;
+    const DescribingFunctionModel model(sc.car, C, sc.track.railLength);
+    ContinuationSettings settings;
+    settings.fromMph = o.fromMph;
+    settings.toMph = o.toMph;
+    settings.stability = o.stabilityMethod == "floquet" ? StabilityMethod::Floquet
+                         : o.stabilityMethod == "none"  ? StabilityMethod::None
+                                                        : StabilityMethod::FoldRule;
+    r.branches = model.trace(settings);
+    if (r.branches.empty())
+        throw std::runtime_error(fmt::format("no harmonic-balance solution found at {} mph", o.fromMph));
+    r.inputNote = fmt::format(
+        "sinusoidal cross-level of amplitude {:.4f} in: the fundamental harmonic 8A/(3 pi) cos(pi wheelbase/L_r) "
+        "of the {:.3f} in rectified-sine cross-level averaged over the wheelbase",
+        C / units::inch, sc.track.amplitude / units::inch);
+    return r;
+}
+
+nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc, const SteadyOptions& o,
+                                      const std::string& command) {
+    nlohmann::ordered_json j;
+    j["car"] = sc.car.name;
+    j["amplitude_in"] = sc.track.amplitude / units::inch;
+    j["input_amplitude_in"] = r.inputAmplitude / units::inch;
+    j["input"] = r.inputNote;
+    j["model"] = "describing function (half car, report 4.1 simplifications)";
+    j["stability"] = o.stabilityMethod == "floquet"
+                         ? "Floquet multipliers of the time-domain twin's periodic orbit at every point"
+                     : o.stabilityMethod == "none"
+                         ? "not computed"
+                         : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
+                           "at the stretch's middle point";
+    j["provenance"] = makeProvenance(sc, command);
+    j["provenance"]["model"] = "describing function";  // the scenario's [run] model is not used here
+    j["branches"] = nlohmann::ordered_json::array();
+    for (const auto& b : r.branches) {
+        nlohmann::ordered_json jb;
+        // null, never true, when nothing decided it (--stability none, or no evidence).
+        jb["stable"] = b.stability == Stability::NotComputed ? nlohmann::ordered_json(nullptr)
+                                                              : nlohmann::ordered_json(b.stability == Stability::Stable);
+        jb["stability"] = b.stability == Stability::Stable     ? "stable"
+                          : b.stability == Stability::Unstable ? "unstable"
+                                                               : "not computed";
+        jb["points"] = nlohmann::ordered_json::array();
+        for (const auto& p : b.points)
+            jb["points"].push_back({{"speed_mph", p.speedMph},
+                                    {"roll_amplitude_deg", p.rollAmplitudeDeg},
+                                    {"wheel_lift_fraction", p.wheelLiftFraction},
+                                    {"max_wheel_load_lb", p.maxWheelLoadLb},
+                                    {"max_side_bearing_load_lb", p.maxSideBearingLoadLb},
+                                    {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
+                                    {"folds_before", p.foldsBefore},
+                                    {"floquet_converged", p.floquetConverged},
+                                    {"stability_evidence", p.stabilityEvidence},
+                                    {"twin_persistence", std::isfinite(p.twinPersistence) && p.twinPersistence > 0
+                                                             ? nlohmann::ordered_json(p.twinPersistence)
+                                                             : nlohmann::ordered_json(nullptr)},
+                                    {"max_floquet_multiplier",
+                                     std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
+                                                                           : nlohmann::ordered_json(nullptr)}});
+        j["branches"].push_back(jb);
+    }
+    return j;
+}
+
+const UncoupledEstimate* ModesResult::findEstimate(const Mode& m) const {
+    const std::string& base = m.body;
+    std::string motion = m.motion;
+    if (motion == "sway-roll") motion = m.name.find("lower") != std::string::npos ? "roll" : "sway";
+    for (const auto& e : table1)
+        if (e.body == base && e.motion == motion) return &e;
+    return nullptr;
+}
+
+ModesResult calcScenarioModes(const Scenario& sc) {
+    const ModelDescriptor* descriptor = ModelRegistry::get().find(sc.model);
+    if (!descriptor || !descriptor->isMultibody())
+        throw ScenarioError(fmt::format("{}: modes need a Simbody model with truck masses: {}, not \"{}\"", sc.source,
+                                        fmt::join(ModelRegistry::get().getMultibodyNames(), " or "), sc.model));
+    TrackSpec level = sc.track;
+    level.amplitude = 0;
+    level.measured.clear();
+    ModelOptions options;
+    options.speed = sc.speed;
+    options.entry = sc.entry;
+    const auto model = descriptor->makeMultibody(makeModalCar(sc.car), TrackInput(level), options);
+    ModesResult r;
+    r.modes = calcModes(*model);
+    r.table1 = calcTable1Estimates(sc.car);
+    return r;
+}
+
+nlohmann::ordered_json makeModesJson(const ModesResult& r, const Scenario& sc, const std::string& command) {
+    nlohmann::ordered_json j;
+    j["model"] = sc.model;
+    j["car"] = sc.car.name;
+    j["linearization"] = "about static equilibrium, every contact closed, Coulomb friction removed";
+    j["provenance"] = makeProvenance(sc, command);
+    j["modes"] = nlohmann::ordered_json::array();
+    for (const Mode& m : r.modes) {
+        nlohmann::ordered_json jm{{"name", m.name},           {"frequency_hz", m.frequencyHz},
+                                  {"damping_ratio", m.dampingRatio}, {"body", m.body},
+                                  {"motion", m.motion},       {"energy_share", m.energyShare}};
+        if (const auto* e = r.findEstimate(m)) {
+            jm["table1_formula_hz"] = e->frequencyHz;
+            jm["table1_report_hz"] = e->reportHz > 0 ? nlohmann::ordered_json(e->reportHz) : nlohmann::ordered_json(nullptr);
+        }
+        j["modes"].push_back(jm);
+    }
+    j["table1"] = nlohmann::ordered_json::array();
+    for (const auto& e : r.table1)
+        j["table1"].push_back({{"body", e.body}, {"motion", e.motion}, {"formula_hz", e.frequencyHz},
+                               {"report_hz", e.reportHz > 0 ? nlohmann::ordered_json(e.reportHz) : nlohmann::ordered_json(nullptr)}});
+    return j;
+}
+
+}  // namespace rockroll::app
