@@ -1,4 +1,5 @@
 #include "app/Commands.h"
+#include "app/JsonWriter.h"
 #include "app/Output.h"
 #include "app/Provenance.h"
 
@@ -86,7 +87,7 @@ int runCommand(const RunOptions& o) {
     nlohmann::ordered_json j = toJson(run.summary);
     j["provenance"] = makeProvenance(sc, getCommandLine());
     writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
-    writeAtomically(dir / "summary.json", [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    writeJsonFile(dir / "summary.json", j);
 
     if (o.json) {
         fmt::print("{}\n", j.dump());
