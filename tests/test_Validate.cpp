@@ -303,7 +303,9 @@ TEST(Validate, CommittedReportNamesAnExistingCommit) {
 }
 
 TEST(Validate, QuickRunWritesAReportWithEverySection) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "rockroll_validate_quick";
+    // In this build's own test folder: a shared /tmp path is removed and rewritten by the
+    // same test of any other checkout running at the time (seen: exit 1 when it was).
+    const std::filesystem::path out = std::filesystem::path(ROCKROLL_TEST_TMP) / "validate_quick";
     std::filesystem::remove_all(out);
     const std::string cmd = std::string(ROCKROLL_BIN) + " validate --quick --out '" + out.string() + "' > /dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
