@@ -1,5 +1,6 @@
 #include "app/Commands.h"
 #include "app/CommandResults.h"
+#include "app/JsonWriter.h"
 #include "app/Output.h"
 #include "app/Provenance.h"
 
@@ -88,7 +89,7 @@ int runCommand(const RunOptions& o) {
     fs::create_directories(dir);
     const nlohmann::ordered_json j = makeRunJson(run, sc, getCommandLine());
     writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
-    writeAtomically(dir / "summary.json", [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    writeJsonFile(dir / "summary.json", j);
 
     if (o.json) {
         fmt::print("{}\n", j.dump());

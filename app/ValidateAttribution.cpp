@@ -80,7 +80,7 @@ std::string fmtJump(double mph, double rise) {
 
 }  // namespace
 
-std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_json& meta) {
+std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& meta) {
     const auto wall0 = std::chrono::steady_clock::now();
     const std::vector<Factor> factors = makeFactors(s.quick);
     // 20 s, as section 1: in 10 s from rest the reduced model has not yet grown to its
@@ -116,7 +116,7 @@ std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_j
     }
     // The long jobs first, so no thread is left with one at the end.
     longJobs.insert(longJobs.end(), jobs.begin(), jobs.end());
-    runJobs(std::move(longJobs), s.jobs);
+    runJobs(longJobs, s.jobs);
 
     for (size_t f = 0; f < factors.size(); ++f) {
         FactorResult& r = res[f];

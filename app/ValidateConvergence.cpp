@@ -52,7 +52,7 @@ std::pair<double, std::string> getLargestChange(const RunSummary& a, const RunSu
 
 }  // namespace
 
-std::string makeConvergenceSection(const SectionSettings& s, nlohmann::ordered_json& meta) {
+std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta) {
     const auto wall0 = std::chrono::steady_clock::now();
     // 20 s, as section 1. At 10 s the severe case is still growing from rest, and its
     // max roll then moves 4.8 % from ×2 to ×4 (measured); at 20 s it has saturated.
@@ -82,7 +82,7 @@ std::string makeConvergenceSection(const SectionSettings& s, nlohmann::ordered_j
                 res[c][v] = runScenario(sc).summary;
             });
         }
-    runJobs(std::move(jobs), s.jobs);
+    runJobs(jobs, s.jobs);
     const double wallMin = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60;
 
     std::string md = "## 7. Convergence: contact stiffness and integrator accuracy\n\n";

@@ -1,71 +1,134 @@
 #pragma once
-// The validate sections that live outside app/Validate.cpp: attribution of the
-// half car – reduced model difference (issue 9, item 6) and convergence in
-// contact stiffness and integrator accuracy (item 7). Each returns its markdown
-// section and fills its key of the validation.json meta object.
+// rockroll validate writes results/REPORT.md as a set of sections, one source file
+// each (app/Validate<Section>.cpp), each owning its computation and its prose;
+// app/Validate.cpp is the driver that runs them in report order. The report's
+// published numbers come from scenarios/reference/mit1976.toml (mbmodel/Mit1976.h),
+// the threads from the program's one pool (mbmodel/Parallel.h).
 #include "app/Output.h"
+#include "bespoke/DescribingFunction.h"
+#include "mbmodel/Mit1976.h"
 #include "scenarios/ScenarioRun.h"
+#include "scenarios/SpeedSweep.h"
 
-#include <atomic>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <functional>
-#include <mutex>
+#include <map>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
+#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace rockroll::app {
 
-struct SectionSettings {
+struct Settings {
     bool quick = false;
+    std::filesystem::path out;
     int jobs = 2;  ///< threads (validate --jobs)
+    double rollLimitDeg = 6, wheelLoadLimit = 0.10;
+    std::vector<std::string> sweepModels;      ///< swept on every case
+    std::vector<std::string> fullCarSweepCars; ///< cars the full car is also swept on (all their amplitudes)
+    double sweepStep = 1, sweepDuration = 20, runDuration = 20;
 };
 
-std::string makeAttributionSection(const SectionSettings& s, nlohmann::ordered_json& meta);
-std::string makeConvergenceSection(const SectionSettings& s, nlohmann::ordered_json& meta);
+// ---- shared between sections ---------------------------------------------------
+
+/// A case of section 2's sweeps; `figure` names the report's figure of that case.
+struct SweepCase {
+    std::string car;
+    double amplitudeIn, fromMph, toMph;
+    std::string figure;
+};
+
+struct SweepResult {
+    SweepCase c;
+    std::string model;
+    std::vector<SweepPoint> up, down;
+    double jumpUpMph = NAN, jumpDownMph = NAN;
+};
+
+/// Describing-function solutions per amplitude (70-ton loaded), sections 3 and 5.
+using SteadyByAmplitude = std::map<double, std::vector<SteadyStateBranch>>;
+
+/// The report this run replaces (its default-case runs and commit), read before it is overwritten.
+struct PreviousReport {
+    nlohmann::json defaultRuns;
+    std::string commit;
+};
+
+// ---- the sections, in report order (file) ------------------------------------------
+
+/// Title, provenance and the quick/full note (ValidateHeader.cpp).
+std::string makeHeader(const Settings& s, const std::string& commit, double minutes);
+/// 1. Time histories of the default case (ValidateTimeHistories.cpp).
+std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& meta);
+/// What moved since the previous report (ValidateChanges.cpp).
+PreviousReport readPreviousReport(const std::filesystem::path& out);
+std::string makeChangesSection(const PreviousReport& previous, const nlohmann::ordered_json& meta);
+/// 2. Speed sweeps with hysteresis (ValidateSweeps.cpp); their results feed sections 3, 4 and 9.
+std::vector<SweepResult> runAllSweeps(const Settings& s);
+std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta);
+/// 3. Table 3 (ValidateTable3.cpp).
+std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
+                              nlohmann::ordered_json& meta);
+/// 4. Table 4 (ValidateTable4.cpp).
+std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps);
+/// 5. Describing function (ValidateDescribingFunction.cpp); traceSteady also feeds section 3.
+SteadyByAmplitude traceSteady(const Settings& s);
+std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmplitude& steady, nlohmann::ordered_json& meta);
+/// 6. Modes against Table 1 (ValidateModes.cpp).
+std::string makeModesSection();
+/// 7. Convergence in contact stiffness and integrator accuracy (ValidateConvergence.cpp).
+std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta);
+/// 8. The added degrees of freedom (ValidateAddedDof.cpp).
+std::string makeAddedDofSection(const Settings& s);
+/// 9. Twist-and-roll criteria per sweep (ValidateCriteria.cpp).
+std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult>& sweeps);
+/// 10. Attribution of the half car – reduced model difference (ValidateAttribution.cpp).
+std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& meta);
 
 namespace validate_detail {
 
-/// Runs independent jobs on `threads` threads, in order of submission; rethrows the first error.
-inline void runJobs(std::vector<std::function<void()>> jobs, int threads) {
-    std::atomic<size_t> next{0};
-    std::mutex errorMutex;
-    std::string firstError;
-    auto worker = [&] {
-        for (size_t i = next++; i < jobs.size(); i = next++) {
-            try {
-                jobs[i]();
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(errorMutex);
-                if (firstError.empty()) firstError = e.what();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int k = 0; k < std::max(1, threads); ++k) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    if (!firstError.empty()) throw std::runtime_error(firstError);
-}
+/// Runs independent jobs on `threads` threads of the program's one pool (mbmodel/Parallel.h),
+/// in order of submission; each job stores its result by index. Rethrows the error of the
+/// first failed job (in submission order).
+void runJobs(const std::vector<std::function<void()>>& jobs, int threads);
+
+/// scenarios/<car>.toml of the source tree.
+Scenario loadCar(const std::string& car);
 
 /// The 70-ton loaded car (the embedded default scenario) at amplitude and speed,
 /// from rest, recorded at 100 Hz as in section 1.
-inline Scenario makeLoaded70(const std::string& model, double amplitudeIn, double speedMph, double durationS) {
-    Scenario sc = getDefaultScenario();
-    sc.model = model;
-    sc.track.amplitude = amplitudeIn * units::inch;
-    sc.speed = speedMph * units::mph;
-    sc.run.duration = durationS;
-    sc.run.outputRate = 100;
-    return sc;
-}
+Scenario makeLoaded70(const std::string& model, double amplitudeIn, double speedMph, double durationS);
 
 /// Relative change from a to b, |b − a| / max(|a|, |b|); 0 when both are below `floor`.
-inline double relativeChange(double a, double b, double floor) {
-    const double d = std::max(std::abs(a), std::abs(b));
-    return d < floor ? 0.0 : std::abs(b - a) / d;
-}
+double relativeChange(double a, double b, double floor);
+
+/// "+12 %": ours against the report's, empty when there is nothing to compare.
+std::string fmtPct(double ours, double report);
+
+/// "90 000", "up to 90 000": a published value as the report words it.
+std::string fmtPublished(const PublishedValue& v);
+
+/// "sweep_<car>_<A>in" key part: "70ton-loaded_0.75in".
+std::string caseKey(const SweepCase& c);
+
+/// "reduced, halfcar (every case) and fullcar (70ton-loaded)".
+std::string describeSweptModels(const Settings& s);
+
+/// Max roll, wheel lift, wheel load, side bearing, center plate (Tables 3 and 4).
+std::array<double, 5> getTableValues(const RunSummary& x);
+
+/// The larger of the up and down sweep points nearest `mph` (a sweep's maxima at that speed).
+std::optional<std::array<double, 5>> findSweepValues(const std::vector<SweepResult>& sweeps, const std::string& car,
+                                                     double amp, const std::string& model, double mph);
+
+/// The largest (stable, when stability was decided) describing-function solution at
+/// `mph`, interpolated along the path: roll amplitude, wheel load, side bearing.
+std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateBranch>& branches, double mph,
+                                                  bool stableOnly);
 
 }  // namespace validate_detail
 }  // namespace rockroll::app

@@ -2,14 +2,13 @@
 
 #include "bespoke/EomSimulation.h"
 #include "bespoke/StiffIntegrator.h"
+#include "mbmodel/Parallel.h"
 #include "mbmodel/Units.h"
 
 #include <unsupported/Eigen/NonLinearOptimization>
 
-#include <atomic>
 #include <functional>
 #include <cmath>
-#include <thread>
 #include <limits>
 #include <numbers>
 
@@ -548,15 +547,8 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
             }
         }
     };
-    auto runParallel = [](size_t count, const std::function<void(size_t)>& job) {
-        std::atomic<size_t> next{0};
-        auto worker = [&] {
-            for (size_t i = next++; i < count; i = next++) job(i);
-        };
-        std::vector<std::thread> pool;
-        for (unsigned k = 0; k < std::max(1u, std::thread::hardware_concurrency()); ++k) pool.emplace_back(worker);
-        for (auto& th : pool) th.join();
-    };
+    // Nested in a parallel job (validate), the enclosing pool's threads; else one per core.
+    auto runParallel = [](size_t count, const std::function<void(size_t)>& job) { parallelFor(count, 0, job); };
     if (s.stability == StabilityMethod::Floquet) {
         runParallel(points.size(), [&](size_t i) { applyFloquet(points[i]); });
     } else if (s.stability == StabilityMethod::FoldRule && !points.empty()) {

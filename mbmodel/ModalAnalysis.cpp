@@ -1,4 +1,5 @@
 #include "mbmodel/ModalAnalysis.h"
+#include "mbmodel/Mit1976.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -142,22 +143,22 @@ std::vector<UncoupledEstimate> calcTable1Estimates(const CarParameters& car) {
     const double h = car.cgAboveCenterPlate + car.centerPlateAboveSprings;
     const double Mb = car.bolsterWeight / g, Mw = car.wheelsetWeight / g;
     auto hz = [](double w2) { return std::sqrt(w2) / (2 * M_PI); };
-    // The report's printed values (its Table 1), by car.
-    std::map<std::string, std::vector<double>> report{
-        {"70ton-loaded", {2.17, 1.42, 0.88, 26.5, 17.3, 27.7, 11.3, 7.37, 12.5}},
-        {"100ton-loaded", {1.88, 1.28, 0.70, 25.2, 17.1, 25.0, 10.2, 6.94, 11.7}},
-        {"70ton-empty", {3.52, 2.29, 2.18, 0, 0, 0, 0, 0, 0}}};
-    const std::vector<double> printed = report.count(car.name) ? report[car.name] : std::vector<double>(9, 0.0);
+    // The report's printed values (its Table 1; scenarios/reference/mit1976.toml), 0 where it gives none.
+    const Mit1976& ref = Mit1976::get();
+    auto printed = [&](const char* body, const char* motion) {
+        const std::string key = fmt::format("table1.{}.{}_{}", car.name, body, motion);
+        return ref.has(key) ? ref(key, "Hz") : 0.0;
+    };
     return {
-        {"car body", "heave", hz(4 * Kv / M), printed[0]},
-        {"car body", "sway", hz(4 * Kh / M), printed[1]},
-        {"car body", "roll", hz(Kv * l * l / (car.rollInertia + M * h * h)), printed[2]},
-        {"bolster", "heave", hz(4 * Kv / Mb), printed[3]},
-        {"bolster", "sway", hz(4 * Kh / Mb), printed[4]},
-        {"bolster", "roll", hz(Kv * l * l / car.bolsterRollInertia), printed[5]},
-        {"wheelset", "heave", hz(4 * Kv / Mw), printed[6]},
-        {"wheelset", "sway", hz(4 * Kh / Mw), printed[7]},
-        {"wheelset", "roll", hz(Kv * l * l / car.wheelsetRollInertia), printed[8]},
+        {"car body", "heave", hz(4 * Kv / M), printed("car_body", "heave")},
+        {"car body", "sway", hz(4 * Kh / M), printed("car_body", "sway")},
+        {"car body", "roll", hz(Kv * l * l / (car.rollInertia + M * h * h)), printed("car_body", "roll")},
+        {"bolster", "heave", hz(4 * Kv / Mb), printed("bolster", "heave")},
+        {"bolster", "sway", hz(4 * Kh / Mb), printed("bolster", "sway")},
+        {"bolster", "roll", hz(Kv * l * l / car.bolsterRollInertia), printed("bolster", "roll")},
+        {"wheelset", "heave", hz(4 * Kv / Mw), printed("wheelset", "heave")},
+        {"wheelset", "sway", hz(4 * Kh / Mw), printed("wheelset", "sway")},
+        {"wheelset", "roll", hz(Kv * l * l / car.wheelsetRollInertia), printed("wheelset", "roll")},
     };
 }
 

@@ -1,11 +1,10 @@
 #include "scenarios/SpeedSweep.h"
+#include "mbmodel/Parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 namespace rockroll {
 
@@ -65,14 +64,7 @@ std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& spe
         std::lock_guard<std::mutex> lock(callback);
         onPoint(p);
     };
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        for (size_t i = next++; i < specs.size(); i = next++) results[i] = runSweep(specs[i], report);
-    };
-    std::vector<std::thread> pool;
-    const int n = std::max(1, std::min<int>(jobs, int(specs.size())));
-    for (int k = 0; k < n; ++k) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+    parallelFor(specs.size(), std::max(1, jobs), [&](size_t i) { results[i] = runSweep(specs[i], report); });
     return results;
 }
 

@@ -107,3 +107,37 @@ TEST(SpeedSweep, NumericalFailureIsReportedAndTheSweepGoesOn) {
         EXPECT_EQ(p.start, "rest");
     }
 }
+
+// The sweeps run on the program's one pool (mbmodel/Parallel.h); each sweep's result
+// is stored by its index, so every number is bitwise the same for any --jobs.
+TEST(SpeedSweep, ResultsAreBitwiseTheSameForAnyNumberOfJobs) {
+    std::vector<SweepSpec> specs;
+    for (double amplitudeIn : {0.5, 0.75, 1.0})
+        for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
+            SweepSpec s;
+            s.scenario = makeBase("reduced", 3);
+            s.scenario.track.amplitude = amplitudeIn * units::inch;
+            s.fromMph = 15, s.toMph = 17, s.stepMph = 1;
+            s.direction = dir;
+            specs.push_back(s);
+        }
+    const auto one = runSweeps(specs, 1);
+    for (int jobs : {2, 5}) {
+        const auto many = runSweeps(specs, jobs);
+        ASSERT_EQ(many.size(), one.size());
+        for (size_t i = 0; i < one.size(); ++i) {
+            ASSERT_EQ(many[i].size(), one[i].size());
+            for (size_t k = 0; k < one[i].size(); ++k) {
+                const RunSummary &a = one[i][k].summary, &b = many[i][k].summary;
+                EXPECT_EQ(many[i][k].speedMph, one[i][k].speedMph);
+                EXPECT_EQ(b.maxRollDeg, a.maxRollDeg) << jobs << " jobs, sweep " << i << " point " << k;
+                EXPECT_EQ(b.steadyRollAmplitudeDeg, a.steadyRollAmplitudeDeg);
+                EXPECT_EQ(b.maxWheelLiftIn, a.maxWheelLiftIn);
+                EXPECT_EQ(b.maxWheelLoadLb, a.maxWheelLoadLb);
+                EXPECT_EQ(b.maxSideBearingLoadLb, a.maxSideBearingLoadLb);
+                EXPECT_EQ(b.steps, a.steps);
+                EXPECT_EQ(b.regime, a.regime);
+            }
+        }
+    }
+}

@@ -1,0 +1,155 @@
+// validate, section 2: roll against speed, swept up and down (report Figures 11, 14,
+// 17, 18, 21, 24), with the jump speeds and the hysteresis band. The sweeps' results
+// also feed sections 3, 4 and 9.
+#include "app/ValidateSections.h"
+#include "mbmodel/CsvWriter.h"
+
+#include <fmt/format.h>
+
+namespace rockroll::app {
+
+using namespace validate_detail;
+
+namespace {
+
+const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {"70ton-loaded", 0.75, 10, 22, "11, 14"},
+                                         {"70ton-loaded", 1.0, 10, 22, "17"},  {"70ton-empty", 0.75, 24, 40, "18"},
+                                         {"100ton-loaded", 0.75, 8, 18, "21"}, {"100ton-loaded", 1.0, 8, 18, "24"}};
+
+void findJumps(SweepResult& r) {
+    // Up: the largest rise of steady roll between neighbouring speeds; down: the largest fall.
+    double best = 0;
+    for (size_t i = 1; i < r.up.size(); ++i) {
+        if (r.up[i].failed || r.up[i - 1].failed) continue;
+        const double d = r.up[i].summary.steadyRollAmplitudeDeg - r.up[i - 1].summary.steadyRollAmplitudeDeg;
+        if (d > best) best = d, r.jumpUpMph = r.up[i].speedMph;
+    }
+    best = 0;
+    for (size_t i = 1; i < r.down.size(); ++i) {
+        if (r.down[i].failed || r.down[i - 1].failed) continue;
+        const double d = r.down[i - 1].summary.steadyRollAmplitudeDeg - r.down[i].summary.steadyRollAmplitudeDeg;
+        if (d > best) best = d, r.jumpDownMph = r.down[i].speedMph;
+    }
+}
+
+void writeSweepCsv(const Settings& s, const SweepResult& r) {
+    writeAtomically(s.out / fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model), [&](std::ostream& o) {
+        CsvWriter csv(o, {"direction", "start", "speed_mph", "failed", "max_roll_deg", "steady_roll_amplitude_deg",
+                          "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "min_wheel_load_ratio",
+                          "max_side_bearing_load_lb", "max_center_plate_load_lb", "regime"});
+        for (const auto* list : {&r.up, &r.down})
+            for (const auto& p : *list) {
+                const RunSummary& x = p.summary;
+                if (p.failed) {
+                    const CsvCell none = CsvCell::empty();
+                    csv.writeRow({p.direction, p.start, p.speedMph, 1, none, none, none, none, none, none, none, none,
+                                  "failed"});
+                    continue;
+                }
+                csv.writeRow({p.direction, p.start, p.speedMph, 0, CsvCell::fixed(x.maxRollDeg, 4),
+                              CsvCell::fixed(x.steadyRollAmplitudeDeg, 4), CsvCell::fixed(x.peakToPeakRollDeg, 4),
+                              CsvCell::fixed(x.maxWheelLiftIn, 4), CsvCell::fixed(x.maxWheelLoadLb, 0),
+                              CsvCell::fixed(x.minWheelLoadRatio, 4), CsvCell::fixed(x.maxSideBearingLoadLb, 0),
+                              CsvCell::fixed(x.maxCenterPlateLoadLb, 0), x.regime});
+            }
+    });
+}
+
+}  // namespace
+
+std::vector<SweepResult> runAllSweeps(const Settings& s) {
+    std::vector<SweepSpec> specs;
+    std::vector<SweepResult> results;
+    std::vector<std::pair<std::string, SweepCase>> pairs;
+    for (const auto& m : s.sweepModels)
+        for (const auto& c : kSweepCases) pairs.emplace_back(m, c);
+    for (const auto& c : kSweepCases)
+        if (std::count(s.fullCarSweepCars.begin(), s.fullCarSweepCars.end(), c.car)) pairs.emplace_back("fullcar", c);
+    for (const auto& [m, c] : pairs) {
+        SweepResult r;
+        r.c = c;
+        r.model = m;
+        results.push_back(r);
+        for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
+            SweepSpec spec;
+            spec.scenario = loadCar(c.car);
+            spec.scenario.model = m;
+            spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
+            spec.scenario.run.duration = s.sweepDuration;
+            spec.scenario.run.outputRate = 100;
+            spec.fromMph = c.fromMph, spec.toMph = c.toMph, spec.stepMph = s.sweepStep;
+            spec.direction = dir;
+            specs.push_back(spec);
+        }
+    }
+    size_t total = 0, done = 0;
+    for (const auto& sp : specs) total += getSweepSpeeds(sp).size();
+    const auto out = runSweeps(specs, s.jobs, [&](const SweepPoint&) {
+        fmt::print(stderr, "\r  sweeps: {}/{} speeds", ++done, total);
+    });
+    fmt::print(stderr, "\n");
+    for (size_t i = 0; i < results.size(); ++i) {
+        results[i].up = out[2 * i];
+        results[i].down = out[2 * i + 1];
+        findJumps(results[i]);
+    }
+    return results;
+}
+
+std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta) {
+    const Mit1976& ref = Mit1976::get();
+    std::string md = "## 2. Roll against speed, swept up and down (report Figures 11, 14, 17, 18, 21, 24)\n\n";
+    md += fmt::format(
+        "Made by `rockroll sweep scenarios/<car>.toml --model M --amplitude-in A --from-mph V1 --to-mph V2 "
+        "--step-mph {} --duration-s {} --direction both` for models: {}. Each speed starts from the final state of "
+        "the previous one; the speed ramps over 1 s so the rails never jump. Data `sweep_<car>_<A>in_<model>.csv`, "
+        "plots `sweep_<car>_<A>in.png` (roll) and `sweep_loads_<car>_<A>in.png` (wheel lift and loads).\n\n",
+        s.sweepStep, s.sweepDuration, describeSweptModels(s));
+    md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | max steady roll, deg |\n"
+          "|---|---|---|---|---|---|---|\n";
+    for (const auto& r : sweeps) {
+        writeSweepCsv(s, r);
+        double maxSteady = 0;
+        for (const auto* l : {&r.up, &r.down})
+            for (const auto& p : *l)
+                if (!p.failed) maxSteady = std::max(maxSteady, p.summary.steadyRollAmplitudeDeg);
+        const bool band = std::isfinite(r.jumpUpMph) && std::isfinite(r.jumpDownMph) && r.jumpDownMph < r.jumpUpMph;
+        md += fmt::format("| {} | {:.2f} | {} | {} | {} | {} | {:.2f} |\n", r.c.car, r.c.amplitudeIn, r.model,
+                          std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f}", r.jumpUpMph) : "none",
+                          std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f}", r.jumpDownMph) : "none",
+                          band ? fmt::format("{:.1f}–{:.1f}", r.jumpDownMph, r.jumpUpMph) : "—", maxSteady);
+        meta["sweeps"].push_back({{"car", r.c.car}, {"amplitude_in", r.c.amplitudeIn}, {"model", r.model},
+                                  {"file", fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model)},
+                                  {"key", caseKey(r.c)}, {"figure", r.c.figure},
+                                  {"jump_up_mph", std::isfinite(r.jumpUpMph) ? nlohmann::ordered_json(r.jumpUpMph) : nlohmann::ordered_json(nullptr)},
+                                  {"jump_down_mph", std::isfinite(r.jumpDownMph) ? nlohmann::ordered_json(r.jumpDownMph) : nlohmann::ordered_json(nullptr)}});
+    }
+    // What the down sweeps reach at their lowest speed, per model (the high branch or not).
+    md += "\nDown sweeps at their lowest speed (steady roll amplitude): ";
+    std::vector<std::string> ends;
+    for (const auto& r : sweeps)
+        if (!r.down.empty() && !r.down.back().failed && !r.up.empty() && !r.up.front().failed)
+            ends.push_back(fmt::format("{} {:.2f} in {}: {:.2f}° (up sweep there {:.2f}°)", r.c.car, r.c.amplitudeIn,
+                                       r.model, r.down.back().summary.steadyRollAmplitudeDeg,
+                                       r.up.front().summary.steadyRollAmplitudeDeg));
+    md += fmt::format("{}. Where the down sweep ends far above the up sweep, the model holds the high-amplitude branch "
+                      "all the way down, as the report's describing function predicted (its Figure 31, ±{}° at {} mph) but "
+                      "its own simulation never reached.\n", fmt::join(ends, "; "),
+                      formatPublished(ref("describing_function.high_branch_roll", "deg")),
+                      formatPublished(ref("describing_function.high_branch_lowest_speed", "mph")));
+    md += fmt::format("\nThe report's jump speeds: 70-ton loaded at 0.75 in jumps up near {}–{} mph when accelerating (its "
+                      "Figure 11) and stays on the high branch down to about {} mph when decelerating; the 100-ton car peaks near "
+                      "{} mph; the empty car near {} mph. The jump speed is where the steady roll amplitude rises most between "
+                      "neighbouring speeds (up) or falls most (down); the band between them is the hysteresis.\n\n",
+                      formatPublished(ref("sweeps.loaded70_jump_up_from", "mph")),
+                      formatPublished(ref("sweeps.loaded70_jump_up_to", "mph")),
+                      formatPublished(ref("sweeps.loaded70_jump_down", "mph")),
+                      formatPublished(ref("sweeps.loaded100_peak", "mph")),
+                      formatPublished(ref("sweeps.empty70_peak", "mph")));
+    for (const auto& c : kSweepCases)
+        md += fmt::format("![roll against speed, {} {:.2f} in](sweep_{}.png)\n![loads, {} {:.2f} in](sweep_loads_{}.png)\n\n",
+                          c.car, c.amplitudeIn, caseKey(c), c.car, c.amplitudeIn, caseKey(c));
+    return md;
+}
+
+}  // namespace rockroll::app

@@ -1,0 +1,62 @@
+#pragma once
+// The 1976 MIT report's published numbers (Tables 1, 3, 4, §3.1, the jump speeds
+// of its sweep figures and of its describing function), read at run time from the
+// one data file scenarios/reference/mit1976.toml. Every number there carries its
+// unit and its source (table or figure, and page); nothing published is a C++
+// literal. Keys are dotted paths, arrays of tables indexed: "table3[1].max_roll".
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rockroll {
+
+struct PublishedValue {
+    double value = 0;
+    std::string unit;       ///< as the report prints it: "lb", "kip", "in", "deg", "mph", "Hz", "%"
+    std::string qualifier;  ///< the report's own hedge ("up to", "about"), or empty
+    std::string source;     ///< table, figure or section
+    std::string page;       ///< page of the report ("?" while not recorded)
+};
+
+class Mit1976 {
+public:
+    /// The data file, loaded once (thread-safe); throws std::runtime_error when it is
+    /// missing or malformed.
+    static const Mit1976& get();
+
+    /// Where the data file is looked for, in order: $ROCKROLL_MIT1976 when set; the
+    /// source tree's scenarios folder this program was configured from
+    /// (ROCKROLL_SCENARIO_DIR/reference/mit1976.toml, where validate also finds its car
+    /// files); then scenarios/reference/mit1976.toml two folders above the executable
+    /// (build/bin/rockroll inside a source tree that moved after configuring).
+    static std::vector<std::filesystem::path> getSearchPaths();
+    static std::filesystem::path findFile();  ///< the first search path that exists; throws when none
+
+    explicit Mit1976(const std::filesystem::path& file);
+
+    bool has(const std::string& key) const { return values_.count(key) > 0; }
+    /// The published value at `key`; throws unless it exists and is printed in `unit`.
+    const PublishedValue& value(const std::string& key, std::string_view unit) const;
+    double operator()(const std::string& key, std::string_view unit) const { return value(key, unit).value; }
+    /// A text quoted from the report, or a label of this file ("table3[0].car"); throws when missing.
+    const std::string& text(const std::string& key) const;
+    /// The number of tables in the array of tables at `key` ("table3"), 0 when none.
+    size_t count(const std::string& key) const;
+
+    const std::filesystem::path& getFile() const { return file_; }
+    const std::map<std::string, PublishedValue>& getValues() const { return values_; }
+
+private:
+    std::filesystem::path file_;
+    std::map<std::string, PublishedValue> values_;
+    std::map<std::string, std::string> texts_;
+    std::map<std::string, size_t> counts_;
+};
+
+/// A published number as the report prints it: "90 000" (thousands grouped by a space), "2", "19.5".
+std::string formatPublished(double value);
+
+}  // namespace rockroll
