@@ -190,9 +190,12 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
     } else {
         // A complete car inline (as formatScenarioToml writes it): its name and every parameter.
         sc.car = CarParameters{};
-        sc.car.name = car.getText("name", "");
-        if (sc.car.name.empty())
+        if (!car.has("name"))
             car.fail("base", "(missing)", "'base' (a built-in car), 'file' (a car file) or a complete car with 'name'");
+    }
+    if (car.has("name")) {  // names the car (with base or file: a variant of it)
+        sc.car.name = car.getText("name", "");
+        if (sc.car.name.empty()) car.fail("name", "\"\"", "a non-empty string");
     }
     for (const auto& [k, v] : *root.get("car")->as_table()) {
         const CarParameterInfo* info = findCarParameter(k.str());

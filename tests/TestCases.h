@@ -7,6 +7,22 @@
 
 namespace rockroll::test_cases {
 
+/// The smallest complete scenario file: 70-ton loaded car, 0.75 in, 16.5 mph, 20 s, full car.
+inline const std::string kMinimalScenarioToml = R"(
+[car]
+base = "70ton-loaded"
+[track]
+amplitude = "0.75 in"
+rail_length = "39 ft"
+[run]
+speed = "16.5 mph"
+duration = "20 s"
+model = "fullcar"
+[integrator]
+method = "cpodes"
+accuracy = 1e-4
+)";
+
 /// The default scenario (70-ton loaded) with model, amplitude, speed and duration set.
 inline Scenario makeCase(const std::string& model, double amplitudeIn, double speedMph, double duration) {
     Scenario sc = getDefaultScenario();

@@ -1,4 +1,5 @@
 #include "scenarios/ScenarioLoader.h"
+#include "tests/TestCases.h"
 #include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
@@ -10,20 +11,7 @@
 using namespace rockroll;
 
 namespace {
-const std::string kGood = R"(
-[car]
-base = "70ton-loaded"
-[track]
-amplitude = "0.75 in"
-rail_length = "39 ft"
-[run]
-speed = "16.5 mph"
-duration = "20 s"
-model = "fullcar"
-[integrator]
-method = "cpodes"
-accuracy = 1e-4
-)";
+const std::string kGood = test_cases::kMinimalScenarioToml;
 
 std::string errorOf(const std::string& text) {
     try {
