@@ -2,6 +2,8 @@
 // Scenario helpers shared by the model tests.
 #include "scenarios/ScenarioRun.h"
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -31,6 +33,14 @@ inline Scenario makeCase(const std::string& model, double amplitudeIn, double sp
     sc.speed = speedMph * units::mph;
     sc.run.duration = duration;
     return sc;
+}
+
+/// `s` with its first `from` replaced by `to`; a test failure when `from` is not in it.
+inline std::string replaceOnce(std::string s, const std::string& from, const std::string& to) {
+    const size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) s.replace(at, from.size(), to);
+    return s;
 }
 
 /// One recorded channel of a run.

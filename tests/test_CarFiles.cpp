@@ -1,6 +1,7 @@
 // Cars as data: scenarios/cars/*.toml are the built-in cars, each value with its
 // unit and its source; a scenario can also take a car file of its own.
 #include "scenarios/ScenarioLoader.h"
+#include "tests/TestCases.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@ namespace rockroll {
 namespace {
 
 namespace fs = std::filesystem;
+using test_cases::replaceOnce;
 
 std::string readText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -51,13 +53,6 @@ TEST(CarFiles, PublishedValuesAreReadExactly) {
     EXPECT_EQ(heavy.gibRate, 55000 * u::lbfPerInch);
     EXPECT_EQ(heavy.wheelRadius, 18.0 * u::inch);
     EXPECT_EQ(heavy.centerPlateRimPoints, 16);
-}
-
-std::string replaceOnce(std::string s, const std::string& from, const std::string& to) {
-    const size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-    return s;
 }
 
 void expectCarError(const std::string& text, const std::string& needle) {

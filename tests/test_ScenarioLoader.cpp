@@ -21,11 +21,6 @@ std::string errorOf(const std::string& text) {
     }
     return "";
 }
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-    const auto p = s.find(from);
-    EXPECT_NE(p, std::string::npos) << from;
-    return s.replace(p, from.size(), to);
-}
 }  // namespace
 
 TEST(ScenarioLoader, ShippedScenariosLoadWithTheirUnits) {
@@ -42,33 +37,33 @@ TEST(ScenarioLoader, ShippedScenariosLoadWithTheirUnits) {
 }
 
 TEST(ScenarioLoader, OverridesAnyCarParameterWithUnits) {
-    const Scenario sc = parseScenario(replace(kGood, "base = \"70ton-loaded\"",
+    const Scenario sc = parseScenario(test_cases::replaceOnce(kGood, "base = \"70ton-loaded\"",
                                               "base = \"70ton-loaded\"\nside_bearing_clearance = \"0.1875 in\""),
                                       "x.toml");
     EXPECT_NEAR(sc.car.sideBearingClearance, 0.1875 * 0.0254, 1e-12);
 }
 
 TEST(ScenarioLoader, ErrorsNameFileKeyValueAndExpectation) {
-    std::string e = errorOf(replace(kGood, "speed = \"16.5 mph\"\n", ""));
+    std::string e = errorOf(test_cases::replaceOnce(kGood, "speed = \"16.5 mph\"\n", ""));
     EXPECT_NE(e.find("case.toml"), std::string::npos) << e;
     EXPECT_NE(e.find("run.speed"), std::string::npos) << e;
     EXPECT_NE(e.find("missing"), std::string::npos) << e;
 
-    e = errorOf(replace(kGood, "\"16.5 mph\"", "\"16.5 in\""));
+    e = errorOf(test_cases::replaceOnce(kGood, "\"16.5 mph\"", "\"16.5 in\""));
     EXPECT_NE(e.find("run.speed"), std::string::npos) << e;
     EXPECT_NE(e.find("16.5 in"), std::string::npos) << e;
     EXPECT_NE(e.find("mph"), std::string::npos) << e;
 
-    e = errorOf(replace(kGood, "\"0.75 in\"", "0.75"));
+    e = errorOf(test_cases::replaceOnce(kGood, "\"0.75 in\"", "0.75"));
     EXPECT_NE(e.find("track.amplitude"), std::string::npos) << e;
 
-    e = errorOf(replace(kGood, "duration = \"20 s\"", "duration = \"20 s\"\nspeeed = \"3 mph\""));
+    e = errorOf(test_cases::replaceOnce(kGood, "duration = \"20 s\"", "duration = \"20 s\"\nspeeed = \"3 mph\""));
     EXPECT_NE(e.find("run.speeed"), std::string::npos) << e;
 
-    e = errorOf(replace(kGood, "\"fullcar\"", "\"quartercar\""));
+    e = errorOf(test_cases::replaceOnce(kGood, "\"fullcar\"", "\"quartercar\""));
     EXPECT_NE(e.find("halfcar"), std::string::npos) << e;
 
-    e = errorOf(replace(kGood, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\nroll_inertia = \"12 in\""));
+    e = errorOf(test_cases::replaceOnce(kGood, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\nroll_inertia = \"12 in\""));
     EXPECT_NE(e.find("car.roll_inertia"), std::string::npos) << e;
 
     e = errorOf("[car\nbase=1");
@@ -77,7 +72,7 @@ TEST(ScenarioLoader, ErrorsNameFileKeyValueAndExpectation) {
 
 TEST(ScenarioLoader, CommandLineRejectsABadScenarioWithNonZeroExit) {
     const std::string path = (rockroll::test::makeTestTempDir() / "bad_scenario.toml").string();
-    std::ofstream(path) << replace(kGood, "\"0.75 in\"", "\"0.75 parsecs\"");
+    std::ofstream(path) << test_cases::replaceOnce(kGood, "\"0.75 in\"", "\"0.75 parsecs\"");
     const std::string cmd = std::string(ROCKROLL_BIN) + " run " + path + " --json > /dev/null 2> " + path + ".err";
     const int status = std::system(cmd.c_str());
     EXPECT_NE(status, 0);

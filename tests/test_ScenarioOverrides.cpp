@@ -31,11 +31,6 @@ std::string errorOf(const std::function<void()>& f) {
     return "";
 }
 
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-    const auto p = s.find(from);
-    EXPECT_NE(p, std::string::npos) << from;
-    return s.replace(p, from.size(), to);
-}
 }  // namespace
 
 TEST(ScenarioOverrides, ParsesKeyEqualsValue) {
@@ -57,7 +52,7 @@ TEST(ScenarioOverrides, FullKeysSetValuesAsTheFileWould) {
                                        {"description", "\"quoted text\""}});
     const Scenario file = parseScenario(
         "description = \"quoted text\"\n" +
-        replace(replace(replace(replace(replace(kCase, "base = \"70ton-loaded\"",
+        test_cases::replaceOnce(test_cases::replaceOnce(test_cases::replaceOnce(test_cases::replaceOnce(test_cases::replaceOnce(kCase, "base = \"70ton-loaded\"",
                                                 "base = \"70ton-loaded\"\nside_bearing_clearance = \"0.25 in\""),
                                         "\"16.5 mph\"", "\"15 mph\""),
                                 "\"fullcar\"", "\"halfcar\""),
@@ -82,7 +77,7 @@ TEST(ScenarioOverrides, FullKeysSetValuesAsTheFileWould) {
 }
 
 TEST(ScenarioOverrides, ReplaceAValueInTheFileAndCreateAMissingTable) {
-    const std::string text = replace(kCase, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\ngib_clearance = \"1 in\"");
+    const std::string text = test_cases::replaceOnce(kCase, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\ngib_clearance = \"1 in\"");
     const Scenario sc = withOverrides({{"car.gib_clearance", "0.5 in"}, {"limits.flange_height", "1.5 in"},
                                        {"eom.small_angles", "true"}},
                                       OverrideKeys::FullOnly, text);
@@ -92,7 +87,7 @@ TEST(ScenarioOverrides, ReplaceAValueInTheFileAndCreateAMissingTable) {
     EXPECT_EQ(sc.carOverrides.size(), 1u);  // the file's key, replaced in place
     // A later override of the same key wins.
     EXPECT_EQ(withOverrides({{"run.speed", "10 mph"}, {"run.speed", "12 mph"}}).speed,
-              parseScenario(replace(kCase, "16.5 mph", "12 mph"), "case.toml").speed);
+              parseScenario(test_cases::replaceOnce(kCase, "16.5 mph", "12 mph"), "case.toml").speed);
 }
 
 TEST(ScenarioOverrides, BareKeysOnlyWhereAllowedAndUnambiguous) {
@@ -128,15 +123,15 @@ TEST(ScenarioOverrides, BareKeysOnlyWhereAllowedAndUnambiguous) {
 TEST(ScenarioOverrides, BadValuesGetTheFilesOwnMessages) {
     auto fileError = [](const std::string& text) { return errorOf([&] { parseScenario(text, "case.toml"); }); };
     EXPECT_EQ(errorOf([] { withOverrides({{"car.side_bearing_clearance", "-1 in"}}); }),
-              fileError(replace(kCase, "base = \"70ton-loaded\"",
+              fileError(test_cases::replaceOnce(kCase, "base = \"70ton-loaded\"",
                                 "base = \"70ton-loaded\"\nside_bearing_clearance = \"-1 in\"")));
-    EXPECT_EQ(errorOf([] { withOverrides({{"run.speed", "15"}}); }), fileError(replace(kCase, "\"16.5 mph\"", "15")));
+    EXPECT_EQ(errorOf([] { withOverrides({{"run.speed", "15"}}); }), fileError(test_cases::replaceOnce(kCase, "\"16.5 mph\"", "15")));
     EXPECT_EQ(errorOf([] { withOverrides({{"run.speed", "15 parsecs"}}); }),
-              fileError(replace(kCase, "\"16.5 mph\"", "\"15 parsecs\"")));
+              fileError(test_cases::replaceOnce(kCase, "\"16.5 mph\"", "\"15 parsecs\"")));
     EXPECT_EQ(errorOf([] { withOverrides({{"run.model", "quartercar"}}); }),
-              fileError(replace(kCase, "\"fullcar\"", "\"quartercar\"")));
+              fileError(test_cases::replaceOnce(kCase, "\"fullcar\"", "\"quartercar\"")));
     EXPECT_EQ(errorOf([] { withOverrides({{"track.rails", "-1"}}); }),
-              fileError(replace(kCase, "rail_length = \"39 ft\"", "rail_length = \"39 ft\"\nrails = -1")));
+              fileError(test_cases::replaceOnce(kCase, "rail_length = \"39 ft\"", "rail_length = \"39 ft\"\nrails = -1")));
     EXPECT_EQ(errorOf([] { withOverrides({{"limits.enabled", "maybe"}}); }),
               fileError(kCase + "[limits]\nenabled = \"maybe\"\n"));
     EXPECT_NE(errorOf([] { withOverrides({{"run.speed", "15"}}); }).find("case.toml: key 'run.speed' = 15: expected"),
