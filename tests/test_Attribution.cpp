@@ -3,6 +3,7 @@
 // must change exactly what it says in the static state, and nothing else.
 #include "bespoke/ReducedHalfCarModel.h"
 #include "scenarios/ModelRegistry.h"
+#include "tests/TestCases.h"
 #include "mbmodel/RockingModel.h"
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
@@ -13,24 +14,13 @@
 using namespace rockroll;
 
 namespace {
-const char* kBase = R"(
-[car]
-base = "70ton-loaded"
-[track]
-amplitude = "0.75 in"
-rail_length = "39 ft"
-[run]
-speed = "16.5 mph"
-duration = "20 s"
-model = "halfcar"
-[integrator]
-method = "cpodes"
-accuracy = 1e-4
-)";
+/// The minimal scenario with the half car (the switches' own model).
+const std::string kBase = test_cases::replaceOnce(test_cases::kMinimalScenarioToml, "model = \"fullcar\"",
+                                                  "model = \"halfcar\"");
 
 std::string errorOf(const std::string& extra) {
     try {
-        parseScenario(std::string(kBase) + extra, "case.toml");
+        parseScenario(kBase + extra, "case.toml");
     } catch (const ScenarioError& e) {
         return e.what();
     }
@@ -61,7 +51,7 @@ Static makeStatic(const std::string& modelName, AttributionSwitches a) {
 }  // namespace
 
 TEST(Attribution, ScenarioKeysAreReadAndRangeChecked) {
-    const Scenario sc = parseScenario(std::string(kBase) +
+    const Scenario sc = parseScenario(kBase +
                                           "[reduced]\ntruck_weight = true\n[attribution]\ntruck_gravity = false\n"
                                           "truck_mass_scale = 0.01\n",
                                       "x.toml");
@@ -88,12 +78,12 @@ TEST(Attribution, ScenarioKeysAreReadAndRangeChecked) {
 }
 
 TEST(Attribution, SwitchOnAModelItDoesNotApplyToIsAScenarioError) {
-    Scenario sc = parseScenario(std::string(kBase) + "[reduced]\ntruck_weight = true\n", "x.toml");
+    Scenario sc = parseScenario(kBase + "[reduced]\ntruck_weight = true\n", "x.toml");
     sc.run.duration = 0.1;
     EXPECT_THROW(runScenario(sc), ScenarioError);  // halfcar
     sc.model = "reduced";
     EXPECT_NO_THROW(runScenario(sc));
-    Scenario a = parseScenario(std::string(kBase) + "[attribution]\ntruck_gravity = false\n", "x.toml");
+    Scenario a = parseScenario(kBase + "[attribution]\ntruck_gravity = false\n", "x.toml");
     a.run.duration = 0.1;
     for (const char* m : {"eom", "reduced"}) {
         a.model = m;

@@ -3,6 +3,7 @@
 #include "mbmodel/RunLimits.h"
 #include "mbmodel/RunSummary.h"
 #include "scenarios/ScenarioLoader.h"
+#include "tests/TestCases.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -226,20 +227,9 @@ TEST(Regime, StoppedRunCarriesItsStop) {
 }
 
 std::string withLimits(const std::string& limits) {
-    return R"([car]
-base = "70ton-loaded"
-[track]
-amplitude = "0.75 in"
-rail_length = "39 ft"
-[run]
-speed = "16.5 mph"
-duration = "1 s"
-model = "halfcar"
-[integrator]
-method = "cpodes"
-accuracy = 1e-4
-[limits]
-)" + limits + "\n";
+    std::string text = test_cases::replaceOnce(test_cases::kMinimalScenarioToml, "duration = \"20 s\"", "duration = \"1 s\"");
+    text = test_cases::replaceOnce(text, "model = \"fullcar\"", "model = \"halfcar\"");
+    return text + "[limits]\n" + limits + "\n";
 }
 
 TEST(RunLimits, LimitsTableIsReadAndRangeChecked) {
