@@ -3,6 +3,7 @@
 #include "app/JsonWriter.h"
 #include "app/Output.h"
 #include "app/Provenance.h"
+#include "app/ReportComparison.h"
 
 #include "bespoke/DescribingFunction.h"
 #include "mbmodel/ModalAnalysis.h"
@@ -60,15 +61,7 @@ int runDefaultCase() {
                    run.result.stop->reason);
         return kExitDerailed;
     }
-    fmt::print("\nBeside the 1976 report (its §3.1, Figs 8–10: 70-ton loaded, 0.75 in, 16.5 mph):\n");
-    fmt::print("  {:<36}{:>14}{:>18}\n", "quantity", "rockroll", "report");
-    fmt::print("  {:<36}{:>14}{:>18}\n", "regime", s.regime, "severe");
-    fmt::print("  {:<36}{:>11.0f} lb{:>18}\n", "max side-bearing force", s.maxSideBearingLoadLb, "up to 90,000 lb");
-    fmt::print("  {:<36}{:>11.2f} in{:>18}\n", "max wheel lift", s.maxWheelLiftIn, "approaching 2 in");
-    fmt::print("  {:<36}{:>11.0f} lb{:>18}\n", "max wheel force (2 wheels, 1 side)", s.maxWheelLoadLb,
-               "about 100,000 lb");
-    fmt::print("  {:<36}{:>14.2f}{:>18}\n", "max wheel force / static", s.maxWheelLoadLb / s.staticWheelLoadLb,
-               "almost 2");
+    fmt::print("\n{}", formatBesideSection3_1(s, run.result.history));
     fmt::print("(no parameter was tuned to these numbers; see docs/model.md)\n");
     return 0;
 }

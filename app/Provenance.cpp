@@ -1,4 +1,5 @@
 #include "app/Provenance.h"
+#include "mbmodel/DataFiles.h"
 
 #include "app/BuildInfo.h"
 
@@ -22,7 +23,13 @@ void setCommandLine(int argc, char** argv) {
 const std::string& getCommandLine() { return commandLine(); }
 
 std::string getVersionString() {
-    return fmt::format("rockroll {} (commit {})\n{}", kVersion, kGitCommit, ROCKROLL_SIMBODY_BUILD);
+    std::string data;
+    try {
+        data = findDataFile("scenarios/reference/mit1976.toml").parent_path().parent_path().parent_path().string();
+    } catch (const std::exception& e) {
+        data = std::string("not found: ") + e.what();
+    }
+    return fmt::format("rockroll {} (commit {})\n{}\ndata files: {}", kVersion, kGitCommit, ROCKROLL_SIMBODY_BUILD, data);
 }
 
 nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& command) {

@@ -46,7 +46,7 @@ int validateCommand(const ValidateOptions& o) {
     s.jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
     s.rollLimitDeg = o.rollLimitDeg;
     s.wheelLoadLimit = o.wheelLoadLimit;
-    s.sweepModels = o.quick ? std::vector<std::string>{"reduced"} : std::vector<std::string>{"reduced", "halfcar"};
+    s.sweepModels = o.quick ? std::vector<std::string>{model_names::kReduced} : std::vector<std::string>{model_names::kReduced, model_names::kHalfCar};
     // The full car, at Release-Simbody speed (bench/README.md), on the report's main car at all three amplitudes.
     if (!o.quick) s.fullCarSweepCars = {"70ton-loaded"};
     s.sweepStep = o.quick ? 1.0 : 0.5;
@@ -89,7 +89,7 @@ int validateCommand(const ValidateOptions& o) {
 
     writeJsonFile(s.out / "validation.json", meta);
     step("plots");
-    const std::string plotCmd = fmt::format("{} '{}/app/plots.py' '{}'", python, ROCKROLL_SOURCE_DIR, s.out.string());
+    const std::string plotCmd = fmt::format("{} '{}' '{}'", python, findDataFile("app/plots.py").string(), s.out.string());
     if (std::system(plotCmd.c_str()) != 0) throw std::runtime_error("plotting failed: " + plotCmd);
 
     const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60;

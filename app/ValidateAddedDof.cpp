@@ -18,7 +18,7 @@ std::string makeAddedDofSection(const Settings& s) {
         for (int m = 0; m < 2; ++m)
             jobs.push_back([&, i, m] {
                 Scenario sc = loadCar(cases[i].car);
-                sc.model = m == 0 ? "fullcar" : "halfcar";
+                sc.model = m == 0 ? model_names::kFullCar : model_names::kHalfCar;
                 sc.track.amplitude = cases[i].amp * units::inch;
                 sc.speed = cases[i].mph * units::mph;
                 sc.run.duration = s.runDuration;
@@ -42,7 +42,7 @@ std::string makeAddedDofSection(const Settings& s) {
     for (size_t i = 0; i < cases.size(); ++i)
         for (int m = 0; m < 2; ++m)
             md += fmt::format("| {} {:.2f} in {:g} mph | {} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} |\n", cases[i].car,
-                              cases[i].amp, cases[i].mph, m == 0 ? "fullcar" : "halfcar", res[i][m].maxRollDeg,
+                              cases[i].amp, cases[i].mph, m == 0 ? model_names::kFullCar : model_names::kHalfCar, res[i][m].maxRollDeg,
                               angles[i][m][0], angles[i][m][1], res[i][m].minWheelLoadRatio, res[i][m].maxWheelLoadLb);
     return md + "\nThe half car is planar, so its pitch and yaw are zero by construction.\n\n";
 }

@@ -38,31 +38,31 @@ struct FactorResult {
 std::vector<Factor> makeFactors(bool quick) {
     auto none = [](Scenario&) {};
     std::vector<Factor> f;
-    f.push_back({"reduced", "baseline", "reduced: massless truck (report §2.2)", "reduced", none, true, true});
-    f.push_back({"reduced_truck_weight", "truck weight", "reduced: `truck_weight = true`", "reduced",
+    f.push_back({"reduced", "baseline", "reduced: massless truck (report §2.2)", model_names::kReduced, none, true, true});
+    f.push_back({"reduced_truck_weight", "truck weight", "reduced: `truck_weight = true`", model_names::kReduced,
                  [](Scenario& s) { s.reduced.truckWeight = true; }, true, true});
-    f.push_back({"halfcar", "baseline", "half car (Simbody)", "halfcar", none, true, true});
-    f.push_back({"halfcar_truck_gravity_off", "truck weight", "half car: `truck_gravity = false`", "halfcar",
+    f.push_back({"halfcar", "baseline", "half car (Simbody)", model_names::kHalfCar, none, true, true});
+    f.push_back({"halfcar_truck_gravity_off", "truck weight", "half car: `truck_gravity = false`", model_names::kHalfCar,
                  [](Scenario& s) { s.attribution.truckGravity = false; }, true, true});
-    f.push_back({"halfcar_truck_mass_0.01", "truck mass", "half car: `truck_mass_scale = 0.01`", "halfcar",
+    f.push_back({"halfcar_truck_mass_0.01", "truck mass", "half car: `truck_mass_scale = 0.01`", model_names::kHalfCar,
                  [](Scenario& s) { s.attribution.truckMassScale = 0.01; }, true, false});
     if (quick) return f;
     for (double k : {0.25, 0.5, 2.0, 4.0})
         f.push_back({fmt::format("halfcar_contact_stiffness_{:g}", k), "contact stiffness",
-                     fmt::format("half car: contact stiffness ×{:g}", k), "halfcar",
+                     fmt::format("half car: contact stiffness ×{:g}", k), model_names::kHalfCar,
                      [k](Scenario& s) { s.car.contactStiffnessScale = k; }, true, false});
-    for (const char* model : {"halfcar", "reduced"})
+    for (const char* model : {model_names::kHalfCar, model_names::kReduced})
         for (double k : {0.25, 4.0})
             f.push_back({fmt::format("{}_bristle_deflection_{:g}", model, k), "friction",
                          fmt::format("{}: friction bristle deflection ×{:g}",
-                                     std::string(model) == "halfcar" ? "half car" : "reduced", k),
+                                     std::string(model) == model_names::kHalfCar ? "half car" : "reduced", k),
                          model, [k](Scenario& s) { s.car.frictionBristleDeflection *= k; }, true, false});
     f.push_back({"halfcar_bristle_damping_0", "friction", "half car: bristle damping 0 (the reduced wedge has none)",
-                 "halfcar", [](Scenario& s) { s.car.frictionBristleDampingRatio = 0; }, true, false});
-    f.push_back({"fullcar", "baseline", "full car (Simbody)", "fullcar", none, false, false});
-    f.push_back({"fullcar_truck_gravity_off", "truck weight", "full car: `truck_gravity = false`", "fullcar",
+                 model_names::kHalfCar, [](Scenario& s) { s.car.frictionBristleDampingRatio = 0; }, true, false});
+    f.push_back({"fullcar", "baseline", "full car (Simbody)", model_names::kFullCar, none, false, false});
+    f.push_back({"fullcar_truck_gravity_off", "truck weight", "full car: `truck_gravity = false`", model_names::kFullCar,
                  [](Scenario& s) { s.attribution.truckGravity = false; }, false, false});
-    f.push_back({"fullcar_truck_mass_0.01", "truck mass", "full car: `truck_mass_scale = 0.01`", "fullcar",
+    f.push_back({"fullcar_truck_mass_0.01", "truck mass", "full car: `truck_mass_scale = 0.01`", model_names::kFullCar,
                  [](Scenario& s) { s.attribution.truckMassScale = 0.01; }, false, false});
     return f;
 }
@@ -99,7 +99,7 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
         std::sort(res[f].speeds.begin(), res[f].speeds.end());
         res[f].fromRest.resize(res[f].speeds.size());
         for (size_t i = 0; i < res[f].speeds.size(); ++i)
-            (factors[f].model == "fullcar" ? longJobs : jobs).push_back([&, f, i] {
+            (factors[f].model == model_names::kFullCar ? longJobs : jobs).push_back([&, f, i] {
                 Scenario sc = makeLoaded70(factors[f].model, kAmplitudeIn, res[f].speeds[i], duration);
                 factors[f].apply(sc);
                 res[f].fromRest[i] = runScenario(sc).summary;
@@ -206,12 +206,12 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
     };
     std::vector<Effect> effects;
     for (const auto& f : factors) {
-        if (f.group == "baseline" || f.model == "fullcar") continue;
+        if (f.group == "baseline" || f.model == model_names::kFullCar) continue;
         const RunSummary* x = at(f.key, V);
-        const RunSummary* base = f.model == "reduced" ? R0 : H0;
+        const RunSummary* base = f.model == model_names::kReduced ? R0 : H0;
         if (!x) continue;
         // Toward the other model: the reduced model's lift falling, the half car's rising.
-        const double share = (f.model == "reduced" ? base->maxWheelLiftIn - x->maxWheelLiftIn
+        const double share = (f.model == model_names::kReduced ? base->maxWheelLiftIn - x->maxWheelLiftIn
                                                    : x->maxWheelLiftIn - base->maxWheelLiftIn) / gap;
         effects.push_back({f.label, f.group, x->regime, base->maxWheelLiftIn, x->maxWheelLiftIn, share,
                            base->maxRollDeg, x->maxRollDeg, x->regime == base->regime});
@@ -289,9 +289,9 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
                           "weight {}; truck mass {}. The reduced model's: friction {}; truck weight {}. On the sweep "
                           "branch (state carried, same speeds) the half car jumps at {:.1f} mph and the reduced model "
                           "at {:.1f} mph. Jump speeds are resolved to the {:g} mph step.",
-                          rh.jumpRest, rr.jumpRest, jumpsOf("contact stiffness", "halfcar"), jumpsOf("friction", "halfcar"),
-                          jumpsOf("truck weight", "halfcar"), jumpsOf("truck mass", "halfcar"),
-                          jumpsOf("friction", "reduced"), jumpsOf("truck weight", "reduced"), rh.jumpCarried,
+                          rh.jumpRest, rr.jumpRest, jumpsOf("contact stiffness", model_names::kHalfCar), jumpsOf("friction", model_names::kHalfCar),
+                          jumpsOf("truck weight", model_names::kHalfCar), jumpsOf("truck mass", model_names::kHalfCar),
+                          jumpsOf("friction", model_names::kReduced), jumpsOf("truck weight", model_names::kReduced), rh.jumpCarried,
                           rr.jumpCarried, grid[1] - grid[0]);
     }
     md += fmt::format("\n\nSection wall time: {:.1f} min on {} thread(s).\n\n", wallMin, s.jobs);

@@ -12,7 +12,7 @@ void runJobs(const std::vector<std::function<void()>>& jobs, int threads) {
 }
 
 Scenario loadCar(const std::string& car) {
-    return loadScenarioFile(std::string(ROCKROLL_SCENARIO_DIR) + "/" + car + ".toml");
+    return loadScenarioFile(findDataFile("scenarios/" + car + ".toml").string());
 }
 
 Scenario makeLoaded70(const std::string& model, double amplitudeIn, double speedMph, double durationS) {
@@ -33,10 +33,6 @@ double relativeChange(double a, double b, double floor) {
 std::string fmtPct(double ours, double report) {
     if (!(report != 0) || !std::isfinite(ours)) return "";
     return fmt::format("{:+.0f} %", 100 * (ours - report) / report);
-}
-
-std::string fmtPublished(const PublishedValue& v) {
-    return v.qualifier.empty() ? formatPublished(v.value) : v.qualifier + " " + formatPublished(v.value);
 }
 
 std::string caseKey(const SweepCase& c) { return fmt::format("{}_{:.2f}in", c.car, c.amplitudeIn); }

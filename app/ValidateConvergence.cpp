@@ -58,8 +58,8 @@ std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& me
     // max roll then moves 4.8 % from ×2 to ×4 (measured); at 20 s it has saturated.
     const double duration = 20;
     std::vector<Case> cases;
-    for (const char* model : {"halfcar", "fullcar"}) {
-        if (s.quick && std::string(model) == "fullcar") continue;
+    for (const char* model : {model_names::kHalfCar, model_names::kFullCar}) {
+        if (s.quick && std::string(model) == model_names::kFullCar) continue;
         if (!s.quick) cases.push_back({"light", model, 0.75, 12});
         if (!s.quick) cases.push_back({"moderate", model, 0.75, 21});
         cases.push_back({"severe", model, 0.75, 16.5});

@@ -18,8 +18,8 @@ std::string makeModesSection() {
         const Scenario sc = loadCar(carName);
         TrackSpec level = sc.track;
         level.amplitude = 0;
-        for (const char* model : {"halfcar", "fullcar"}) {
-            if (std::string(model) == "fullcar" && std::string(carName) != "70ton-loaded") continue;
+        for (const char* model : {model_names::kHalfCar, model_names::kFullCar}) {
+            if (std::string(model) == model_names::kFullCar && std::string(carName) != "70ton-loaded") continue;
             const auto m = ModelRegistry::get().getModel(model).makeMultibody(
                 makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}});
             const auto table1 = calcTable1Estimates(sc.car);

@@ -6,7 +6,9 @@
 // the threads from the program's one pool (mbmodel/Parallel.h).
 #include "app/Output.h"
 #include "bespoke/DescribingFunction.h"
+#include "mbmodel/DataFiles.h"
 #include "mbmodel/Mit1976.h"
+#include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
 
@@ -108,9 +110,6 @@ double relativeChange(double a, double b, double floor);
 
 /// "+12 %": ours against the report's, empty when there is nothing to compare.
 std::string fmtPct(double ours, double report);
-
-/// "90 000", "up to 90 000": a published value as the report words it.
-std::string fmtPublished(const PublishedValue& v);
 
 /// "sweep_<car>_<A>in" key part: "70ton-loaded_0.75in".
 std::string caseKey(const SweepCase& c);

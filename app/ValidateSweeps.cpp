@@ -64,7 +64,7 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
     for (const auto& m : s.sweepModels)
         for (const auto& c : kSweepCases) pairs.emplace_back(m, c);
     for (const auto& c : kSweepCases)
-        if (std::count(s.fullCarSweepCars.begin(), s.fullCarSweepCars.end(), c.car)) pairs.emplace_back("fullcar", c);
+        if (std::count(s.fullCarSweepCars.begin(), s.fullCarSweepCars.end(), c.car)) pairs.emplace_back(model_names::kFullCar, c);
     for (const auto& [m, c] : pairs) {
         SweepResult r;
         r.c = c;

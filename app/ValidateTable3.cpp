@@ -32,7 +32,7 @@ std::vector<Table3Row> loadTable3(const Mit1976& ref) {
 std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
                               nlohmann::ordered_json& meta) {
     const std::vector<Table3Row> table3 = loadTable3(Mit1976::get());
-    const std::vector<std::string> allModels{"fullcar", "halfcar", "eom", "reduced"};
+    const std::vector<std::string> allModels{model_names::kFullCar, model_names::kHalfCar, model_names::kEom, model_names::kReduced};
     // Models without sweeps: one run from rest at the report's speed. values[row][model].
     std::vector<std::vector<std::array<double, 5>>> values(table3.size(), std::vector<std::array<double, 5>>(allModels.size()));
     std::vector<std::function<void()>> jobs;

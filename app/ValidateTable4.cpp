@@ -13,7 +13,7 @@ std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>&
     const std::string car = ref.text("table4.car");
     const double amplitudeIn = ref("table4.amplitude", "in");
     const std::array<double, 2> speeds{ref("table4.aar_speed", "mph"), ref("table4.reduced_speed", "mph")};
-    const std::vector<std::string> allModels{"fullcar", "halfcar", "eom", "reduced"};
+    const std::vector<std::string> allModels{model_names::kFullCar, model_names::kHalfCar, model_names::kEom, model_names::kReduced};
     std::string md = fmt::format("## 4. The report's Table 4 ({}, {:g} in: AAR detailed model against its reduced model)\n\n",
                                  car == "70ton-loaded" ? "70-ton loaded" : car, amplitudeIn);
     md += fmt::format("Same sources as Table 3, at {:g} mph (the AAR model's speed) and {:g} mph (the reduced model's).\n\n",

@@ -20,7 +20,7 @@ const std::vector<std::string> kHistoryColumns{"t_s",          "roll_deg",      
 
 std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& meta) {
     const Mit1976& ref = Mit1976::get();
-    const std::vector<std::string> models{"fullcar", "halfcar", "eom", "reduced"};
+    const std::vector<std::string> models{model_names::kFullCar, model_names::kHalfCar, model_names::kEom, model_names::kReduced};
     std::vector<ScenarioRun> runs(models.size());
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < models.size(); ++i)
@@ -41,11 +41,11 @@ std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& me
     };
     row("regime", ref.text("section3_1.regime"), [](const RunSummary& x) { return x.regime; });
     row("max roll, deg", "—", [](const RunSummary& x) { return fmt::format("{:.2f}", x.maxRollDeg); });
-    row("max side-bearing force, lb", fmtPublished(ref.value("section3_1.max_side_bearing_load", "lb")),
+    row("max side-bearing force, lb", formatPublished(ref.value("section3_1.max_side_bearing_load", "lb")),
         [](const RunSummary& x) { return fmt::format("{:.0f}", x.maxSideBearingLoadLb); });
-    row("max wheel lift, in", fmtPublished(ref.value("section3_1.max_wheel_lift", "in")),
+    row("max wheel lift, in", formatPublished(ref.value("section3_1.max_wheel_lift", "in")),
         [](const RunSummary& x) { return fmt::format("{:.2f}", x.maxWheelLiftIn); });
-    row("max wheel force (2 wheels, 1 side), lb", fmtPublished(ref.value("section3_1.max_wheel_load", "lb")),
+    row("max wheel force (2 wheels, 1 side), lb", formatPublished(ref.value("section3_1.max_wheel_load", "lb")),
         [](const RunSummary& x) { return fmt::format("{:.0f}", x.maxWheelLoadLb); });
     row("longest center-plate separation, s", "—",
         [](const RunSummary& x) { return fmt::format("{:.3f}", x.centerPlateSeparationLongestS); });

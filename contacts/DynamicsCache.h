@@ -7,6 +7,8 @@
 // time drops the State below Dynamics, so a stale value can never be read.
 #include <Simbody.h>
 
+#include <memory>
+
 namespace rockroll {
 
 template <class T>
@@ -14,7 +16,8 @@ class DynamicsCache {
 public:
     /// Call from the element's realizeTopology.
     void allocate(const SimTK::Subsystem& subsystem, SimTK::State& s) const {
-        index_ = subsystem.allocateCacheEntry(s, SimTK::Stage::Dynamics, new SimTK::Value<T>());
+        // Simbody takes ownership of the cache value.
+        index_ = subsystem.allocateCacheEntry(s, SimTK::Stage::Dynamics, std::make_unique<SimTK::Value<T>>().release());
     }
     /// Written by calcForce, while the subsystem is being realized to Dynamics.
     T& upd(const SimTK::Subsystem& subsystem, const SimTK::State& s) const {

@@ -1,4 +1,5 @@
 #include "mbmodel/Mit1976.h"
+#include "mbmodel/DataFiles.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -103,12 +104,7 @@ size_t Mit1976::count(const std::string& key) const {
 std::vector<fs::path> Mit1976::getSearchPaths() {
     std::vector<fs::path> paths;
     if (const char* env = std::getenv("ROCKROLL_MIT1976"); env && *env) paths.emplace_back(env);
-#ifdef ROCKROLL_SCENARIO_DIR
-    paths.push_back(fs::path(ROCKROLL_SCENARIO_DIR) / "reference" / "mit1976.toml");
-#endif
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) paths.push_back(exe.parent_path().parent_path().parent_path() / "scenarios" / "reference" / "mit1976.toml");
+    for (const auto& dir : getDataDirs()) paths.push_back(dir / "scenarios" / "reference" / "mit1976.toml");
     return paths;
 }
 
@@ -136,6 +132,12 @@ std::string formatPublished(double value) {
         out += digits[i];
     }
     return negative ? "-" + out : out;
+}
+
+std::string formatPublished(const PublishedValue& v, bool withUnit) {
+    std::string out = v.qualifier.empty() ? formatPublished(v.value) : v.qualifier + " " + formatPublished(v.value);
+    if (withUnit && !v.unit.empty()) out += " " + v.unit;
+    return out;
 }
 
 }  // namespace rockroll

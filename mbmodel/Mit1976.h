@@ -27,11 +27,8 @@ public:
     /// missing or malformed.
     static const Mit1976& get();
 
-    /// Where the data file is looked for, in order: $ROCKROLL_MIT1976 when set; the
-    /// source tree's scenarios folder this program was configured from
-    /// (ROCKROLL_SCENARIO_DIR/reference/mit1976.toml, where validate also finds its car
-    /// files); then scenarios/reference/mit1976.toml two folders above the executable
-    /// (build/bin/rockroll inside a source tree that moved after configuring).
+    /// Where the data file is looked for, in order: $ROCKROLL_MIT1976 when set, then
+    /// scenarios/reference/mit1976.toml in each of getDataDirs() (mbmodel/DataFiles.h).
     static std::vector<std::filesystem::path> getSearchPaths();
     static std::filesystem::path findFile();  ///< the first search path that exists; throws when none
 
@@ -58,5 +55,7 @@ private:
 
 /// A published number as the report prints it: "90 000" (thousands grouped by a space), "2", "19.5".
 std::string formatPublished(double value);
+/// A published value with the report's hedge: "up to 90 000"; with its unit: "up to 90 000 lb".
+std::string formatPublished(const PublishedValue& v, bool withUnit = false);
 
 }  // namespace rockroll

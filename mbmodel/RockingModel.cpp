@@ -1,4 +1,5 @@
 #include "mbmodel/RockingModel.h"
+#include "contacts/CustomForce.h"
 
 
 #include <cmath>
@@ -65,9 +66,7 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
             for (int w = 0; w < truck->getNumWheelsets() && !a.truckGravity; ++w)
                 gravity.setDefaultBodyIsExcluded(truck->getWheelset(w).getMobilizedBodyIndex(), true);
     }
-    auto* meter = new EnergyMeter(forces_, *this);
-    Force::Custom(forces_, meter);
-    energyMeter_ = meter;
+    energyMeter_ = &addCustomForce<EnergyMeter>(forces_, forces_, *this);
     system_.realizeTopology();
     State s = makeStaticState(false);
     staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];

@@ -1,4 +1,5 @@
 #include "mbmodel/Truck.h"
+#include "contacts/CustomForce.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -82,9 +83,7 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         cpl.yawBristleDamping = criticalDamping(cpl.yawBristleStiffness, car_.yawInertia / 2,
                                                 car_.frictionBristleDampingRatio);
     }
-    auto* cp = new CenterPlateContact(forces, cpg, cpl);
-    Force::Custom(forces, cp);
-    centerPlate_ = cp;
+    centerPlate_ = &addCustomForce<CenterPlateContact>(forces, forces, cpg, cpl);
 
     const double kWedgeV = car_.verticalFriction / car_.frictionBristleDeflection;
     const double kWedgeH = car_.lateralFriction / car_.frictionBristleDeflection;
@@ -98,25 +97,19 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
                                                    car_.sideBearingAboveSprings - car_.centerPlateAboveSprings),
                              bolster_, Vec3(0, sg * car_.sideBearingOffset, car_.sideBearingAboveSprings),
                              car_.sideBearingClearance};
-        auto* sbe = new SideBearing(sb, {scale * car_.sideBearingStiffness, d});
-        Force::Custom(forces, sbe);
-        sideBearing_[side] = sbe;
+        sideBearing_[side] = &addCustomForce<SideBearing>(forces, sb, UnilateralContactLaw{scale * car_.sideBearingStiffness, d});
 
-        auto* vs = new VerticalSpringGroup(makeSuspensionLink(sg),
-                                           {car_.springVerticalRate, car_.springTravel, car_.bottomingRate});
-        Force::Custom(forces, vs);
-        verticalSpring_[side] = vs;
+        verticalSpring_[side] = &addCustomForce<VerticalSpringGroup>(
+            forces, makeSuspensionLink(sg),
+            VerticalSpringLaw{car_.springVerticalRate, car_.springTravel, car_.bottomingRate});
 
-        auto* ls = new LateralSpringGroup(makeSuspensionLink(sg),
-                                          {car_.springLateralRate, car_.gibClearance, car_.gibRate, d});
-        Force::Custom(forces, ls);
-        lateralSpring_[side] = ls;
+        lateralSpring_[side] = &addCustomForce<LateralSpringGroup>(
+            forces, makeSuspensionLink(sg),
+            LateralSpringLaw{car_.springLateralRate, car_.gibClearance, car_.gibRate, d});
 
         BristleFrictionLaw fv{car_.verticalFriction, kWedgeV, criticalDamping(kWedgeV, mB / 2, zeta)};
         BristleFrictionLaw fh{car_.lateralFriction, kWedgeH, criticalDamping(kWedgeH, mB / 2, zeta)};
-        auto* fw = new FrictionWedge(forces, makeSuspensionLink(sg), fv, fh);
-        Force::Custom(forces, fw);
-        wedge_[side] = fw;
+        wedge_[side] = &addCustomForce<FrictionWedge>(forces, forces, makeSuspensionLink(sg), fv, fh);
     }
 
     for (size_t i = 0; i < wheelsets_.size(); ++i) {
@@ -132,9 +125,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         law.lateralDamping = criticalDamping(law.lateralStiffness, m, car_.lateralContactDampingRatio);
         const std::array<Vec3, 2> tread{Vec3(0, car_.gauge / 2, -car_.wheelRadius),
                                         Vec3(0, -car_.gauge / 2, -car_.wheelRadius)};
-        auto* wr = new WheelRailContact(wheelsets_[i], tread, {car_.gauge / 2, -car_.gauge / 2}, ws.rails, law);
-        Force::Custom(forces, wr);
-        wheelRail_.push_back(wr);
+        wheelRail_.push_back(&addCustomForce<WheelRailContact>(
+            forces, wheelsets_[i], tread, std::array<double, 2>{car_.gauge / 2, -car_.gauge / 2}, ws.rails, law));
     }
 }
 

@@ -1,0 +1,20 @@
+#pragma once
+// The default case's numbers beside the 1976 report's §3.1 (Figures 8–10), as the
+// bare `rockroll` command prints them. The report's numbers come from
+// scenarios/reference/mit1976.toml (mbmodel/Mit1976.h), never from literals here.
+#include "mbmodel/RunSummary.h"
+#include "mbmodel/TimeHistory.h"
+
+#include <string>
+
+namespace rockroll::app {
+
+/// The largest raw load over the "wheels_*_lb" channels (two wheels of one truck side)
+/// in [lateFrom, lateTo] over the same in [earlyFrom, earlyTo] [s]: the report's §3.1
+/// growth of wheel force as the rocking builds up. NaN when the early window has no load.
+double calcWheelLoadGrowth(const TimeHistory& h, double earlyFrom, double earlyTo, double lateFrom, double lateTo);
+
+/// The table "quantity | rockroll | report" for the §3.1 case.
+std::string formatBesideSection3_1(const RunSummary& s, const TimeHistory& h);
+
+}  // namespace rockroll::app

@@ -1,0 +1,24 @@
+#pragma once
+// Where rockroll finds the data files it ships (the report's numbers, the built-in
+// scenarios, validate's plotting script): an installed program in its own prefix,
+// a build-tree program in the source tree it was configured from. No Simbody.
+#include <filesystem>
+#include <vector>
+
+namespace rockroll {
+
+/// The folders searched, in order, each holding the source tree's layout
+/// ("scenarios/reference/mit1976.toml", "app/plots.py"):
+///  1. $ROCKROLL_DATA_DIR, when set;
+///  2. <prefix>/share/rockroll, where <prefix> is two folders above the executable
+///     (an installed program uses its own prefix's files first);
+///  3. the source tree this build was configured from;
+///  4. two folders above the executable's folder (build/bin/rockroll inside a source
+///     tree that moved after configuring).
+std::vector<std::filesystem::path> getDataDirs();
+
+/// The first data folder holding `relative`; std::runtime_error naming every path tried
+/// when none does.
+std::filesystem::path findDataFile(const std::filesystem::path& relative);
+
+}  // namespace rockroll
