@@ -77,7 +77,7 @@ bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
 
     const double roll = std::abs(ch(layout_.roll)) * units::degree;
     if (limits_.rolloverAngle > 0 && roll > limits_.rolloverAngle)
-        return stop("overturned", fmt::format("car-body roll {:.2f} deg passed the static rollover angle {:.2f} deg",
+        return stop("overturned", fmt::format("car-body roll {:.2f} deg passed the rollover angle limit {:.2f} deg ([limits] rollover_angle; by default the static rollover angle of the car)",
                                               roll / units::degree, limits_.rolloverAngle / units::degree));
 
     for (size_t w = 0; w < layout_.wheelsets.size(); ++w) {

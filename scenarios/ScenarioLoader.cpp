@@ -35,7 +35,7 @@ std::vector<ValueRange> makeValueRanges() {
         {"track.rail_length", Dimension::Length, 1, 100, false, false, "m"},
         {"track.rails", Dimension::Dimensionless, 0, 1e5, false, false, "", true},
         {"run.speed", Dimension::Speed, 0.1 * units::mph, 150 * units::mph, false, false, "mph"},
-        {"run.duration", Dimension::Time, 0, 3600, true, false, "s"},
+        {"run.duration", Dimension::Time, 0.05, 3600, false, false, "s"},
         {"run.output_rate", Dimension::Frequency, 1, 1e5, false, false, "Hz"},
         {"run.filter_cutoff", Dimension::Frequency, 0, 5e4, true, true, "Hz"},
         {"integrator.accuracy", Dimension::Dimensionless, 1e-10, 1e-1, false, false, ""},
@@ -70,9 +70,11 @@ std::string ValueRange::format(double si) const {
 }
 
 std::string ValueRange::describe() const {
-    const std::string what = integer ? "an integer" : dimension == units::Dimension::Dimensionless
-                                                          ? "a number"
-                                                          : fmt::format("a {}", units::getDimensionName(dimension));
+    const std::string_view name = units::getDimensionName(dimension);
+    const std::string what = integer ? "an integer"
+                             : dimension == units::Dimension::Dimensionless
+                                 ? "a number"
+                                 : fmt::format("{} {}", std::string_view("aeiou").find(name[0]) == std::string_view::npos ? "a" : "an", name);
     if (std::isinf(high)) return fmt::format("{} {} {} (finite)", what, lowOpen ? ">" : "≥", format(low));
     return fmt::format("{} in {}{}, {}{}", what, lowOpen ? "(" : "[", format(low), format(high), highOpen ? ")" : "]");
 }

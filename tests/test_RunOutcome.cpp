@@ -30,15 +30,17 @@ std::string readFile(const fs::path& p) {
 
 const std::string kScenarios = ROCKROLL_SCENARIO_DIR;
 
-TEST(RunOutcome, FiftyInchCrossLevelOverturnsWithExitFiveAndKeepsTheHistory) {
+TEST(RunOutcome, APassedRolloverLimitStopsTheRunWithExitFiveAndKeepsTheHistory) {
     const fs::path dir = makeTempDir();
-    const int code = runCli("run " + kScenarios + "/70ton-loaded.toml --model halfcar --amplitude-in 50 --duration-s 20 "
-                            "--out '" + (dir / "out").string() + "'",
+    // 50 in of cross-level used to be the way to overturn; it is refused now (track.amplitude ≤ 3 in).
+    const int code = runCli("run " + std::string(ROCKROLL_SOURCE_DIR) + "/tests/data/rollover-limit.toml --out '" +
+                                (dir / "out").string() + "'",
                             dir / "err.txt");
     EXPECT_EQ(code, 5) << readFile(dir / "err.txt");
     const auto j = nlohmann::json::parse(readFile(dir / "out" / "summary.json"));
     const std::string regime = j["regime"];
-    EXPECT_TRUE(regime == "overturned" || regime == "derailed") << regime;
+    EXPECT_EQ(regime, "overturned");
+    EXPECT_NE(j["stop_reason"].get<std::string>().find("rollover angle limit 2.00 deg"), std::string::npos);
     const double stopped = j["stopped_at_s"];
     EXPECT_GT(stopped, 0);
     EXPECT_LT(stopped, 20);
