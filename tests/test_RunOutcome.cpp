@@ -33,7 +33,7 @@ const std::string kScenarios = ROCKROLL_SCENARIO_DIR;
 TEST(RunOutcome, APassedRolloverLimitStopsTheRunWithExitFiveAndKeepsTheHistory) {
     const fs::path dir = makeTempDir();
     // 50 in of cross-level used to be the way to overturn; it is refused now (track.amplitude ≤ 3 in).
-    const int code = runCli("run " + std::string(ROCKROLL_SOURCE_DIR) + "/tests/data/rollover-limit.toml --out '" +
+    const int code = runCli("run " + kScenarios + "/70ton-loaded-rollover-limit.toml --out '" +
                                 (dir / "out").string() + "'",
                             dir / "err.txt");
     EXPECT_EQ(code, 5) << readFile(dir / "err.txt");
@@ -60,6 +60,20 @@ TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
                             dir / "err.txt");
     EXPECT_EQ(code, 3);
     EXPECT_NE(readFile(dir / "err.txt").find("wall-time limit"), std::string::npos) << readFile(dir / "err.txt");
+}
+
+// SIGINT and SIGTERM end a run with exit 130 (README, exit codes). The full car's 20 s
+// run takes far longer than the one second before the signal.
+TEST(RunOutcome, SigtermAndSigintExitWith130) {
+    const fs::path dir = makeTempDir();
+    for (const char* signal : {"TERM", "INT"}) {
+        const std::string script = std::string(ROCKROLL_BIN) + " run " + kScenarios + "/70ton-loaded.toml --out '" +
+                                   (dir / signal).string() + "' > /dev/null 2> '" + (dir / "err.txt").string() +
+                                   "' & p=$!; sleep 1; kill -" + signal + " $p; wait $p";
+        const int status = std::system(script.c_str());
+        EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 130) << signal << ": " << readFile(dir / "err.txt");
+        EXPECT_NE(readFile(dir / "err.txt").find("interrupted"), std::string::npos) << signal;
+    }
 }
 
 TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {

@@ -204,6 +204,7 @@ cli_case("cli-unknown-subcommand", "simulate", "simulate")
 cli_case("cli-run-speed-no-value", f"run {B} --speed-mph", "--speed-mph")
 cli_case("cli-run-out-is-a-file", f"run {B} --out {B}/sub", "base.toml")
 
+SW = f"sweep {B} --from-mph 14 --to-mph 15 --step-mph 1"  # a valid sweep that the options below spoil
 for i, v in enumerate(["0", "500", "nan", "-1"]):
     cli_case(f"cli-sweep-from-{i}", f"sweep {B} --from-mph {v} --to-mph 15 --step-mph 1", "--from-mph && expected a speed")
 for i, v in enumerate(["0", "200", "inf"]):
@@ -214,13 +215,13 @@ cli_case("cli-sweep-too-many-speeds", f"sweep {B} --from-mph 1 --to-mph 150 --st
 cli_case("cli-sweep-reversed", f"sweep {B} --from-mph 16 --to-mph 14 --step-mph 1", "--to-mph && --from-mph")
 cli_case("cli-sweep-no-step", f"sweep {B} --from-mph 14 --to-mph 15", "--step-mph")
 for i, v in enumerate(["-1", "1.5", "1e6"]):
-    cli_case(f"cli-sweep-jobs-{i}", f"sweep {B} --from-mph 14 --to-mph 15 --step-mph 1 --jobs {v}", "--jobs && expected an integer in [0, 1024]")
-cli_case("cli-sweep-direction", f"sweep {B} --from-mph 14 --to-mph 15 --step-mph 1 --direction sideways", "--direction && expected one of")
-cli_case("cli-sweep-amplitude-nan", f"sweep {B} --from-mph 14 --to-mph 15 --step-mph 1 --amplitude-in 0.5 --amplitude-in nan", "--amplitude-in && expected a length")
+    cli_case(f"cli-sweep-jobs-{i}", f"{SW} --jobs {v}", "--jobs && expected an integer in [0, 1024]")
+cli_case("cli-sweep-direction", f"{SW} --direction sideways", "--direction && expected one of")
+cli_case("cli-sweep-amplitude-nan", f"{SW} --amplitude-in 0.5 --amplitude-in nan", "--amplitude-in && expected a length")
 cli_case("cli-sweep-issue12-sigabrt", f"sweep {S} --model reduced --duration-s 0.001 --from-mph 14 --to-mph 15 --step-mph 0.5",
          "--duration-s && expected a time in [0.05 s, 3600 s]")
 cli_case("cli-sweep-bad-file", f"sweep $BAD/run-speed-0.toml --from-mph 14 --to-mph 15 --step-mph 1", "key 'run.speed'")
-cli_case("cli-sweep-model-unknown", f"sweep {B} --from-mph 14 --to-mph 15 --step-mph 1 --model nosuch", "--model && expected one of")
+cli_case("cli-sweep-model-unknown", f"{SW} --model nosuch", "--model && expected one of")
 
 for i, v in enumerate(["0", "500", "nan"]):
     cli_case(f"cli-steady-from-{i}", f"steady {B} --from-mph {v} --to-mph 15", "--from-mph && expected a speed")
