@@ -102,7 +102,10 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
 }
 
 SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
-    if (!(o.toMph > o.fromMph)) throw std::invalid_argument("--to-mph must exceed --from-mph");
+    checkScenario(sc);
+    if (!(o.toMph > o.fromMph))
+        throw ScenarioError(fmt::format("steady: --to-mph {} must exceed --from-mph {}: expected to > from", o.toMph,
+                                        o.fromMph));
     SteadyResult r;
     const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
                                                                         sc.track.railLength);

@@ -2,6 +2,7 @@
 #include "app/CommandResults.h"
 #include "app/JsonWriter.h"
 #include "app/Output.h"
+#include "app/Progress.h"
 #include "app/Provenance.h"
 #include "app/ReportComparison.h"
 
@@ -121,18 +122,11 @@ int sweepCommand(const SweepOptions& o) {
     std::vector<Scenario> bases;
     for (const std::string& file : o.scenarios) bases.push_back(loadScenarioFile(file));
     const std::vector<SweepSpec> specs = makeSweepSpecs(bases, o);
-    size_t total = 0, done = 0, failed = 0;
+    size_t total = 0;
     for (const auto& s : specs) total += getSweepSpeeds(s).size();
-    auto progress = [&](const SweepPoint& p) {
-        ++done;
-        failed += p.failed ? 1 : 0;
-        const int width = 30, filled = int(width * done / std::max<size_t>(total, 1));
-        fmt::print(stderr, "\r[{}{}] {}/{} speeds{}", std::string(filled, '#'), std::string(width - filled, '-'), done,
-                   total, failed ? fmt::format(", {} failed", failed) : "");
-        if (done == total) fmt::print(stderr, "\n");
-    };
+    SweepProgress progress("sweep", total);
     const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-    const auto results = runSweeps(specs, jobs, progress);
+    const auto results = runSweeps(specs, jobs, [&progress](const SweepPoint& p) { progress(p); });
 
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (size_t i = 0; i < specs.size(); ++i)
@@ -149,7 +143,7 @@ int sweepCommand(const SweepOptions& o) {
                        "lift in", "wheel lb", "side brg lb", "regime");
             for (const SweepPoint& p : results[i]) {
                 if (p.failed) {
-                    fmt::print("{:>10.2f}  numerical failure: {}\n", p.speedMph, p.error.substr(0, p.error.find('\n')));
+                    fmt::print("{:>10.2f}  FAILED: {}\n", p.speedMph, p.error.substr(0, p.error.find('\n')));
                     continue;
                 }
                 const RunSummary& s = p.summary;
@@ -159,7 +153,7 @@ int sweepCommand(const SweepOptions& o) {
             }
         }
     }
-    return failed ? 4 : 0;
+    return progress.getFailed() ? kExitFailedPoints : kExitOk;
 }
 
 int modesCommand(const ModesOptions& o) {

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <functional>
 #include <thread>
 
 namespace rockroll::app {
@@ -65,27 +67,40 @@ int validateCommand(const ValidateOptions& o) {
     const std::string commit = getCommit();
     std::string md;
     auto step = [&](const char* what) { fmt::print(stderr, "validate: {}\n", what); };
+    // A section that throws is reported (stderr, REPORT.md, validation.json) and the
+    // others still run; validate then exits 4.
+    std::vector<std::string> failedSections;
+    auto section = [&](const char* name, const std::function<std::string()>& make) -> std::string {
+        try {
+            return make();
+        } catch (const std::exception& e) {
+            failedSections.push_back(fmt::format("{}: {}", name, e.what()));
+            fmt::print(stderr, "validate: section \"{}\" FAILED: {}\n", name, e.what());
+            return fmt::format("## {}\n\n**This section failed:** {}\n\n", name, e.what());
+        }
+    };
     step("time histories");
-    md += makeTimeHistorySection(s, meta);
-    md += makeChangesSection(previous, meta);
+    md += section("time histories", [&] { return makeTimeHistorySection(s, meta); });
+    md += section("changes", [&] { return makeChangesSection(previous, meta); });
     step("speed sweeps");
     const auto sweeps = runAllSweeps(s);
-    md += makeSweepSection(s, sweeps, meta);
+    md += section("speed sweeps", [&] { return makeSweepSection(s, sweeps, meta); });
     step("describing function");
     const SteadyByAmplitude steady = traceSteady(s);
     step("Tables 3 and 4");
-    md += makeTable3Section(s, sweeps, steady, meta);
-    md += makeTable4Section(s, sweeps);
-    md += makeDescribingFunctionSection(s, steady, meta);
+    md += section("Table 3", [&] { return makeTable3Section(s, sweeps, steady, meta); });
+    md += section("Table 4", [&] { return makeTable4Section(s, sweeps); });
+    md += section("describing function", [&] { return makeDescribingFunctionSection(s, steady, meta); });
     step("modes");
-    md += makeModesSection();
+    md += section("modes", [&] { return makeModesSection(); });
     step("convergence");
-    md += makeConvergenceSection(s, meta);
+    md += section("convergence", [&] { return makeConvergenceSection(s, meta); });
     step("added degrees of freedom");
-    md += makeAddedDofSection(s);
-    md += makeCriteriaSection(s, sweeps);
+    md += section("added degrees of freedom", [&] { return makeAddedDofSection(s); });
+    md += section("criteria", [&] { return makeCriteriaSection(s, sweeps); });
     step("attribution");
-    md += makeAttributionSection(s, meta);
+    md += section("attribution", [&] { return makeAttributionSection(s, meta); });
+    if (!failedSections.empty()) meta["failed_sections"] = failedSections;
 
     writeJsonFile(s.out / "validation.json", meta);
     step("plots");
@@ -96,7 +111,11 @@ int validateCommand(const ValidateOptions& o) {
     const std::string header = makeHeader(s, commit, minutes);
     writeAtomically(s.out / "REPORT.md", [&](std::ostream& out) { out << header << md; });
     fmt::print("wrote {} ({:.1f} min)\n", (s.out / "REPORT.md").string(), minutes);
-    return 0;
+    if (!failedSections.empty()) {
+        fmt::print(stderr, "validate: {} section(s) failed: {}\n", failedSections.size(), fmt::join(failedSections, "; "));
+        return kExitFailedPoints;
+    }
+    return kExitOk;
 }
 
 }  // namespace rockroll::app

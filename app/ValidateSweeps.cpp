@@ -1,6 +1,7 @@
 // validate, section 2: roll against speed, swept up and down (report Figures 11, 14,
 // 17, 18, 21, 24), with the jump speeds and the hysteresis band. The sweeps' results
 // also feed sections 3, 4 and 9.
+#include "app/Progress.h"
 #include "app/ValidateSections.h"
 #include "mbmodel/CsvWriter.h"
 
@@ -82,12 +83,10 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
             specs.push_back(spec);
         }
     }
-    size_t total = 0, done = 0;
+    size_t total = 0;
     for (const auto& sp : specs) total += getSweepSpeeds(sp).size();
-    const auto out = runSweeps(specs, s.jobs, [&](const SweepPoint&) {
-        fmt::print(stderr, "\r  sweeps: {}/{} speeds", ++done, total);
-    });
-    fmt::print(stderr, "\n");
+    SweepProgress progress("validate: sweeps", total);
+    const auto out = runSweeps(specs, s.jobs, [&progress](const SweepPoint& p) { progress(p); });
     for (size_t i = 0; i < results.size(); ++i) {
         results[i].up = out[2 * i];
         results[i].down = out[2 * i + 1];

@@ -6,12 +6,74 @@
 #include "scenarios/ScenarioLoader.h"
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdlib>
+#include <exception>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <new>
+#include <unistd.h>
+
+namespace {
+
+using rockroll::ValueRange;
+
+/// An option given in `unit` checked against a declared range (getValueRange: the same
+/// range the scenario key has), so a bad value names the option, the value and the range.
+CLI::Validator inRange(const ValueRange& range, const std::string& unit) {
+    return CLI::Validator(
+        [range, unit](std::string& text) -> std::string {
+            double si = 0;
+            try {
+                si = rockroll::units::parseQuantity(text + " " + unit, range.dimension);
+            } catch (const std::invalid_argument&) {
+                return fmt::format("{} is not a finite number: expected {}", text, range.describe());
+            }
+            if (range.contains(si)) return "";
+            return fmt::format("{} {} is out of range: expected {}{}", text, unit, range.describe(),
+                               range.key.rfind("--", 0) == 0 ? "" : fmt::format(" (as the scenario key {})", range.key));
+        },
+        range.describe(), "");
+}
+CLI::Validator inRange(const std::string& key, const std::string& unit) {
+    return inRange(rockroll::getValueRange(key), unit);
+}
+
+/// A choice among `names`; a bad one names the value and lists the accepted ones.
+CLI::Validator oneOf(const std::vector<std::string>& names) {
+    const std::string list = fmt::format("{}", fmt::join(names, ", "));
+    return CLI::Validator(
+        [names, list](std::string& text) -> std::string {
+            for (const auto& n : names)
+                if (n == text) return "";
+            return fmt::format("\"{}\": expected one of: {}", text, list);
+        },
+        "one of: " + list, "");
+}
+
+/// SIGINT/SIGTERM: exit 130 (documented) without running destructors from a handler.
+extern "C" void onInterrupt(int) {
+    static const char message[] = "\nrockroll: interrupted\n";
+    [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, message, sizeof message - 1);
+    _exit(130);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace rockroll;
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+    // Every error is caught below; should one escape (a thread), exit 3, never abort.
+    std::set_terminate([] {
+        fmt::print(stderr, "rockroll: internal error: an exception escaped its handler\n");
+        _exit(app::kExitNumericalFailure);
+    });
+    const ValueRange stepRange{"--step-mph", units::Dimension::Speed, 0, 150 * units::mph, true, false, "mph"};
+    const ValueRange jobsRange{"--jobs", units::Dimension::Dimensionless, 0, 1024, false, false, "", true};
+    const ValueRange rollLimitRange{"--roll-limit-deg", units::Dimension::Angle, 0, 90 * units::degree, true, false, "deg"};
+    const ValueRange wheelLoadLimitRange{"--wheel-load-limit", units::Dimension::Dimensionless, 0, 1, false, false, ""};
     CLI::App cli{"rockroll — freight-car rock and roll on staggered jointed track (Simbody models).\n"
                  "With no sub-command: the default case, 70-ton loaded car, 0.75 in, 16.5 mph, full car, 20 s."};
     cli.require_subcommand(0, 1);
@@ -28,14 +90,14 @@ int main(int argc, char** argv) {
                        "rerun exactly the run a summary.json describes (its provenance), instead of a scenario file")
         ->check(CLI::ExistingFile);
     runCmd->add_option("--model", run.model, "the model (overrides the scenario's):\n" + modelHelp)
-        ->check(CLI::IsMember(modelNames));
-    runCmd->add_option("--speed-mph", run.speedMph, "speed [mph]")->check(CLI::PositiveNumber);
+        ->check(oneOf(modelNames));
+    runCmd->add_option("--speed-mph", run.speedMph, "speed [mph]")->check(inRange("run.speed", "mph"));
     runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
-        ->check(CLI::NonNegativeNumber);
-    runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(CLI::PositiveNumber);
+        ->check(inRange("track.amplitude", "in"));
+    runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(inRange("run.duration", "s"));
     runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
     runCmd->add_option("--max-wall-s", run.maxWallS, "wall-time limit; past it the run fails (exit 3) [s]")
-        ->check(CLI::PositiveNumber);
+        ->check(inRange("limits.max_wall_time", "s"));
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
 
     app::SteadyOptions steady;
@@ -43,15 +105,15 @@ int main(int argc, char** argv) {
         "steady", "describing-function steady state against speed (harmonic balance, arclength continuation)");
     steadyCmd->add_option("scenario", steady.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
     steadyCmd->add_option("--amplitude-in", steady.amplitudeIn, "cross-level amplitude A [in]")
-        ->check(CLI::PositiveNumber);
-    steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
-    steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
+        ->check(inRange("track.amplitude", "in"));
+    steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(inRange("run.speed", "mph"));
+    steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(inRange("run.speed", "mph"));
     steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
     steadyCmd->add_option("--stability", steady.stabilityMethod,
                           "fold: each stretch between folds by Floquet on the time-domain twin at its middle point; "
                           "floquet: every point (slow); none")
         ->capture_default_str()
-        ->check(CLI::IsMember({"fold", "floquet", "none"}));
+        ->check(oneOf({"fold", "floquet", "none"}));
 
     app::SweepOptions sweep;
     CLI::App* sweepCmd = cli.add_subcommand(
@@ -60,19 +122,19 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::ExistingFile);
     sweepCmd->add_option("--model", sweep.model, fmt::format("{} (overrides the scenarios)", fmt::join(modelNames, " | ")))
-        ->check(CLI::IsMember(modelNames));
+        ->check(oneOf(modelNames));
     sweepCmd->add_option("--amplitude-in", sweep.amplitudesIn, "cross-level amplitude(s) A [in]")
-        ->check(CLI::PositiveNumber);
-    sweepCmd->add_option("--from-mph", sweep.fromMph, "lowest speed [mph]")->required()->check(CLI::PositiveNumber);
-    sweepCmd->add_option("--to-mph", sweep.toMph, "highest speed [mph]")->required()->check(CLI::PositiveNumber);
-    sweepCmd->add_option("--step-mph", sweep.stepMph, "speed step [mph]")->required()->check(CLI::PositiveNumber);
+        ->check(inRange("track.amplitude", "in"));
+    sweepCmd->add_option("--from-mph", sweep.fromMph, "lowest speed [mph]")->required()->check(inRange("run.speed", "mph"));
+    sweepCmd->add_option("--to-mph", sweep.toMph, "highest speed [mph]")->required()->check(inRange("run.speed", "mph"));
+    sweepCmd->add_option("--step-mph", sweep.stepMph, "speed step [mph]")->required()->check(inRange(stepRange, "mph"));
     sweepCmd->add_option("--direction", sweep.direction, "up | down | both")
         ->capture_default_str()
-        ->check(CLI::IsMember({"up", "down", "both"}));
-    sweepCmd->add_option("--duration-s", sweep.durationS, "simulated time per speed [s]")->check(CLI::PositiveNumber);
-    sweepCmd->add_option("--jobs", sweep.jobs, "parallel sweeps (default: one per core)")->check(CLI::NonNegativeNumber);
+        ->check(oneOf({"up", "down", "both"}));
+    sweepCmd->add_option("--duration-s", sweep.durationS, "simulated time per speed [s]")->check(inRange("run.duration", "s"));
+    sweepCmd->add_option("--jobs", sweep.jobs, "parallel sweeps (default: one per core)")->check(inRange(jobsRange, ""));
     sweepCmd->add_option("--max-wall-s", sweep.maxWallS, "wall-time limit of each speed's run [s]")
-        ->check(CLI::PositiveNumber);
+        ->check(inRange("limits.max_wall_time", "s"));
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
 
@@ -81,27 +143,35 @@ int main(int argc, char** argv) {
         "modes", "natural frequencies and damping, linearized about static equilibrium, beside the report's Table 1");
     modesCmd->add_option("scenario", modes.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
     modesCmd->add_option("--model", modes.model, fmt::format("{} (the multibody models)", fmt::join(multibodyNames, " | ")))
-        ->check(CLI::IsMember(multibodyNames));
+        ->check(oneOf(multibodyNames));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
 
     app::ValidateOptions validate;
     CLI::App* validateCmd = cli.add_subcommand("validate", "regenerate results/: REPORT.md, CSV data and plots");
     validateCmd->add_flag("--quick", validate.quick, "a few minutes: reduced-model sweeps only, coarser steps");
     validateCmd->add_option("--out", validate.outDir, "output directory")->capture_default_str();
-    validateCmd->add_option("--jobs", validate.jobs, "threads (default: one per core)")->check(CLI::NonNegativeNumber);
+    validateCmd->add_option("--jobs", validate.jobs, "threads (default: one per core)")->check(inRange(jobsRange, ""));
     validateCmd->add_option("--roll-limit-deg", validate.rollLimitDeg, "criteria: peak-to-peak roll limit [deg]")
-        ->capture_default_str()->check(CLI::PositiveNumber);
+        ->capture_default_str()->check(inRange(rollLimitRange, "deg"));
     validateCmd->add_option("--wheel-load-limit", validate.wheelLoadLimit,
                             "criteria: minimum single-wheel load over static")
-        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+        ->capture_default_str()->check(inRange(wheelLoadLimitRange, ""));
 
-    cli.footer("Exit codes: 0 ok; 2 bad input (scenario file, key, value and what was expected); 3 numerical "
-               "failure (integrator failure, step limit, runaway state, wall-time limit), with time and state; "
-               "4 a sweep or study finished with failed points; 5 the car derailed or overturned (run stopped, "
-               "history kept); 1 any other error.");
+    cli.footer("Exit codes (no others): 0 ok; 2 bad input: scenario file (and line), key or option, value and the "
+               "accepted range, or an output that cannot be written; 3 numerical failure (integrator failure, step "
+               "limit, runaway state, wall-time limit) with time and state, or any other failure of the computation; "
+               "4 a sweep or study finished with failed points (each reported); 5 the car derailed or overturned (run "
+               "stopped, history kept); 130 interrupted (SIGINT or SIGTERM).\n"
+               "Memory: a run whose recorded history would exceed ROCKROLL_MAX_MEMORY_MB (default 2048) is refused "
+               "(exit 2) with its estimate.");
     cli.set_version_flag("--version", app::getVersionString());
     app::setCommandLine(argc, argv);
-    CLI11_PARSE(cli, argc, argv);
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help and --version exit 0; every command-line error is bad input.
+        return cli.exit(e) == 0 ? app::kExitOk : app::kExitBadInput;
+    }
     // ROCKROLL_PARSE_ONLY=1: check the command line and exit 0 without running (tests/test_DocCommands.cpp).
     if (const char* parseOnly = std::getenv("ROCKROLL_PARSE_ONLY"); parseOnly && std::string(parseOnly) == "1") return 0;
     try {
@@ -117,8 +187,20 @@ int main(int argc, char** argv) {
     } catch (const NumericalFailure& e) {
         fmt::print(stderr, "rockroll: numerical failure: {}\n", e.what());
         return app::kExitNumericalFailure;
+    } catch (const std::filesystem::filesystem_error& e) {
+        fmt::print(stderr, "rockroll: cannot write the output: {}\n", e.what());
+        return app::kExitBadInput;
+    } catch (const std::invalid_argument& e) {
+        fmt::print(stderr, "rockroll: bad input: {}\n", e.what());
+        return app::kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        fmt::print(stderr, "rockroll: out of memory (lower ROCKROLL_MAX_MEMORY_MB, the duration or the output rate)\n");
+        return app::kExitNumericalFailure;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "rockroll: error: {}\n", e.what());
-        return 1;
+        fmt::print(stderr, "rockroll: computation failed: {}\n", e.what());
+        return app::kExitNumericalFailure;
+    } catch (...) {
+        fmt::print(stderr, "rockroll: computation failed (an error that is not a std::exception)\n");
+        return app::kExitNumericalFailure;
     }
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <stdexcept>
 #include <fmt/format.h>
 #include <limits>
 
@@ -24,6 +26,25 @@ RunLimits resolveRunLimits(RunLimits l, const CarParameters& car) {
     if (l.rolloverAngle == 0) l.rolloverAngle = calcStaticRolloverAngle(car);
     if (l.energyRunawayFloor == 0) l.energyRunawayFloor = car.getCarBodyWeight() * units::inch;
     return l;
+}
+
+double estimateHistoryBytes(double duration, double outputRate, size_t channels) {
+    // A std::vector<double> row: its 24-byte header in the history plus its heap block
+    // (values and ~16 bytes of allocator overhead).
+    const double rows = std::floor(duration * outputRate) + 1;
+    return rows * (double(channels + 1) * sizeof(double) + 24 + 16);
+}
+
+double getMemoryLimitBytes() {
+    constexpr double kMiB = 1024.0 * 1024.0;
+    const char* text = std::getenv("ROCKROLL_MAX_MEMORY_MB");
+    if (!text || !*text) return 2048 * kMiB;
+    char* end = nullptr;
+    const double mb = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !std::isfinite(mb) || !(mb > 0))
+        throw std::invalid_argument(fmt::format("environment variable ROCKROLL_MAX_MEMORY_MB = \"{}\": expected a "
+                                                "positive number of MiB (default 2048)", text));
+    return mb * kMiB;
 }
 
 RunGuard::RunGuard(const ChannelLayout& layout, const RunLimits& limits)
@@ -56,7 +77,7 @@ bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
 
     const double roll = std::abs(ch(layout_.roll)) * units::degree;
     if (limits_.rolloverAngle > 0 && roll > limits_.rolloverAngle)
-        return stop("overturned", fmt::format("car-body roll {:.2f} deg passed the static rollover angle {:.2f} deg",
+        return stop("overturned", fmt::format("car-body roll {:.2f} deg passed the rollover angle limit {:.2f} deg ([limits] rollover_angle; by default the static rollover angle of the car)",
                                               roll / units::degree, limits_.rolloverAngle / units::degree));
 
     for (size_t w = 0; w < layout_.wheelsets.size(); ++w) {

@@ -44,6 +44,14 @@ struct RunLimits {
 /// compressed) directly above one rail, atan((gauge/2) / h_cg) [rad].
 double calcStaticRolloverAngle(const CarParameters& car);
 
+/// Bytes the recorded history of a run takes: duration × output rate + 1 rows, each a
+/// vector of (time + channels) doubles with its own heap block.
+double estimateHistoryBytes(double duration, double outputRate, size_t channels);
+/// The most one run's recorded history may take [bytes]: the environment variable
+/// ROCKROLL_MAX_MEMORY_MB (a positive number of MiB), else 2048 MiB. std::invalid_argument
+/// when the variable is set to anything else.
+double getMemoryLimitBytes();
+
 /// Replaces the "from the car" zeros with their values for this car.
 RunLimits resolveRunLimits(RunLimits limits, const CarParameters& car);
 

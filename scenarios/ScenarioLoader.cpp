@@ -10,12 +10,141 @@
 #include <filesystem>
 #include <fmt/ranges.h>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <openssl/evp.h>
 #include <toml++/toml.h>
 
 namespace rockroll {
+
+namespace {
+/// The unit's factor to SI ("mph" → 0.44704); 1 for a plain number.
+double getUnitFactor(units::Dimension dim, std::string_view unit) {
+    return dim == units::Dimension::Dimensionless ? 1.0 : units::parseQuantity(fmt::format("1 {}", unit), dim);
+}
+
+/// The one table of accepted ranges [SI]. The cross-level amplitude limit, 3 in, is
+/// four times the largest amplitude the 1976 report studies (0.75 in; 1 in in Table 3).
+/// Duration, output rate and accuracy are bounded so that no run waits forever.
+std::vector<ValueRange> makeValueRanges() {
+    using units::Dimension;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::vector<ValueRange> r{
+        {"track.amplitude", Dimension::Length, 0, 3 * units::inch, false, false, "in"},
+        {"track.rail_length", Dimension::Length, 1, 100, false, false, "m"},
+        {"track.rails", Dimension::Dimensionless, 0, 1e5, false, false, "", true},
+        {"run.speed", Dimension::Speed, 0.1 * units::mph, 150 * units::mph, false, false, "mph"},
+        {"run.duration", Dimension::Time, 0.05, 3600, false, false, "s"},
+        {"run.output_rate", Dimension::Frequency, 1, 1e5, false, false, "Hz"},
+        {"run.filter_cutoff", Dimension::Frequency, 0, 5e4, true, true, "Hz"},
+        {"integrator.accuracy", Dimension::Dimensionless, 1e-10, 1e-1, false, false, ""},
+        {"integrator.max_step", Dimension::Time, 0, 1, false, false, "s"},
+        {"limits.flange_height", Dimension::Length, 0, 3 * units::inch, true, false, "in"},
+        {"limits.flange_clearance", Dimension::Length, 0, 3 * units::inch, false, false, "in"},
+        {"limits.wheels_off_time", Dimension::Time, 0, 10, true, false, "s"},
+        {"limits.rollover_angle", Dimension::Angle, 0, 90 * units::degree, true, false, "deg"},
+        {"limits.energy_runaway_fraction", Dimension::Dimensionless, 0, 100, true, false, ""},
+        {"limits.max_wall_time", Dimension::Time, 0, 7 * 86400, true, false, "s"},
+        {"limits.severe_separation", Dimension::Time, 0, 1, false, false, "s"},
+        {"attribution.truck_mass_scale", Dimension::Dimensionless, 0.001, 1, false, false, ""},
+    };
+    // Car parameters: finite, and positive unless zero means something (no clearance, no damping).
+    for (const CarParameterInfo& info : getCarParameterTable())
+        r.push_back({std::string("car.") + info.key, info.dimension, 0, inf, !info.mayBeZero, true, info.displayUnit});
+    return r;
+}
+
+std::string formatNumber(double v) { return fmt::format("{:.6g}", v); }
+}  // namespace
+
+bool ValueRange::contains(double si) const {
+    if (!std::isfinite(si)) return false;
+    if (integer && si != std::floor(si)) return false;
+    return (lowOpen ? si > low : si >= low) && (highOpen ? si < high : si <= high);
+}
+
+std::string ValueRange::format(double si) const {
+    const double f = getUnitFactor(dimension, unit);
+    return unit.empty() ? formatNumber(si / f) : fmt::format("{} {}", formatNumber(si / f), unit);
+}
+
+std::string ValueRange::describe() const {
+    const std::string_view name = units::getDimensionName(dimension);
+    const std::string what = integer ? "an integer"
+                             : dimension == units::Dimension::Dimensionless
+                                 ? "a number"
+                                 : fmt::format("{} {}", std::string_view("aeiou").find(name[0]) == std::string_view::npos ? "a" : "an", name);
+    if (std::isinf(high)) return fmt::format("{} {} {} (finite)", what, lowOpen ? ">" : "≥", format(low));
+    return fmt::format("{} in {}{}, {}{}", what, lowOpen ? "(" : "[", format(low), format(high), highOpen ? ")" : "]");
+}
+
+const std::vector<ValueRange>& getValueRanges() {
+    static const std::vector<ValueRange> ranges = makeValueRanges();
+    return ranges;
+}
+
+const ValueRange& getValueRange(std::string_view key) {
+    for (const ValueRange& r : getValueRanges())
+        if (r.key == key) return r;
+    throw std::out_of_range(fmt::format("no declared range for scenario key '{}'", key));
+}
+
+namespace {
+/// A run's summary needs a few recorded samples (mbmodel/RunSummary.cpp).
+void checkSampleCount(const std::string& source, double duration, double outputRate) {
+    constexpr double kMinIntervals = 4;
+    if (!(duration * outputRate >= kMinIntervals))
+        throw ScenarioError(fmt::format("{}: key 'run.duration' = {} s at run.output_rate = {} Hz: expected at least {} "
+                                        "output intervals, a duration ≥ {} s",
+                                        source, duration, outputRate, kMinIntervals, kMinIntervals / outputRate));
+}
+}  // namespace
+
+void checkScenario(const Scenario& sc) {
+    auto check = [&sc](const std::string& key, double value) {
+        const ValueRange& range = getValueRange(key);
+        if (!range.contains(value))
+            throw ScenarioError(fmt::format("{}: key '{}' = {}: expected {}", sc.source, key, range.format(value),
+                                            range.describe()));
+    };
+    for (const CarParameterInfo& info : getCarParameterTable())
+        check(std::string("car.") + info.key, sc.car.*(info.member));
+    check("track.amplitude", sc.track.amplitude);
+    check("track.rail_length", sc.track.railLength);
+    check("track.rails", sc.track.rails);
+    check("run.speed", sc.speed);
+    check("run.duration", sc.run.duration);
+    check("run.output_rate", sc.run.outputRate);
+    check("run.filter_cutoff", sc.filterCutoffHz);
+    if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
+        throw ScenarioError(fmt::format("{}: key 'run.filter_cutoff' = {} Hz: expected a cut-off below the Nyquist "
+                                        "frequency, half the output rate ({} Hz)",
+                                        sc.source, sc.filterCutoffHz, sc.run.outputRate / 2));
+    checkSampleCount(sc.source, sc.run.duration, sc.run.outputRate);
+    check("integrator.accuracy", sc.run.integrator.accuracy);
+    check("integrator.max_step", sc.run.integrator.maxStepSize);
+    const RunLimits& l = sc.run.limits;
+    check("limits.flange_height", l.flangeHeight);
+    check("limits.flange_clearance", l.flangeClearance);
+    if (l.wheelsOffTime != 0) check("limits.wheels_off_time", l.wheelsOffTime);  // 0: from the flange height
+    if (l.rolloverAngle != 0) check("limits.rollover_angle", l.rolloverAngle);    // 0: from the car
+    check("limits.energy_runaway_fraction", l.energyRunawayFraction);
+    check("limits.max_wall_time", l.maxWallTime);
+    check("limits.severe_separation", sc.severeSeparationTime);
+    check("attribution.truck_mass_scale", sc.attribution.truckMassScale);
+}
+
+void checkMemoryEstimate(const Scenario& sc, size_t channels) {
+    const double bytes = estimateHistoryBytes(sc.run.duration, sc.run.outputRate, channels);
+    const double limit = getMemoryLimitBytes();
+    if (bytes > limit)
+        throw ScenarioError(fmt::format(
+            "{}: run.duration = {} s at run.output_rate = {} Hz records {:.0f} samples x {} channels, about {:.0f} MiB "
+            "of history: expected at most {:.0f} MiB (ROCKROLL_MAX_MEMORY_MB); shorten the run or lower the output rate",
+            sc.source, sc.run.duration, sc.run.outputRate, std::floor(sc.run.duration * sc.run.outputRate) + 1,
+            channels + 1, bytes / (1024.0 * 1024.0), limit / (1024.0 * 1024.0)));
+}
 
 namespace {
 
@@ -28,8 +157,24 @@ public:
     bool has(const std::string& key) const { return table_ && table_->contains(key); }
 
     [[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& expected) const {
-        throw ScenarioError(fmt::format("{}: key '{}{}' = {}: expected {}", source_, prefix_, key, value, expected));
+        throw ScenarioError(fmt::format("{}: key '{}{}' = {}: expected {}", locate(key), prefix_, key, value, expected));
     }
+    /// "file:line" of the key (or of its table when it is missing); the file alone for a
+    /// value an override put there (it has no line).
+    std::string locate(const std::string& key) const {
+        const toml::node* n = table_ ? table_->get(key) : nullptr;
+        const toml::source_region& at = n ? n->source() : table_ ? table_->source() : toml::source_region{};
+        return at.begin.line > 0 ? fmt::format("{}:{}", source_, at.begin.line) : source_;
+    }
+    /// A value of `key` (prefix + key is a key of getValueRanges) within its declared range.
+    double getRanged(const std::string& key) {
+        const ValueRange& range = getValueRange(prefix_ + key);
+        if (range.integer && !require(key)->is_integer()) fail(key, describe(*require(key)), range.describe());
+        const double v = range.integer ? double(*require(key)->value<int64_t>()) : getQuantity(key, range.dimension);
+        if (!range.contains(v)) fail(key, describe(*require(key)), range.describe());
+        return v;
+    }
+    double getRanged(const std::string& key, double fallback) { return has(key) ? getRanged(key) : fallback; }
 
     double getQuantity(const std::string& key, units::Dimension dim) {
         const toml::node* n = require(key);
@@ -118,11 +263,11 @@ const toml::table* getTable(const toml::table& root, const std::string& name, co
     return n->as_table();
 }
 
-/// A car parameter's value must be finite, and positive unless zero means something.
+/// A car parameter's value must be within its declared range: finite, and positive unless zero means something.
 void checkCarValue(const TableReader& reader, const std::string& key, const CarParameterInfo& info, double value,
                    const toml::node& given) {
-    if (!std::isfinite(value) || value < 0 || (value == 0 && !info.mayBeZero))
-        reader.fail(key, TableReader::describe(given), info.mayBeZero ? "a finite value ≥ 0" : "a finite positive value");
+    const ValueRange& range = getValueRange(std::string("car.") + info.key);
+    if (!range.contains(value)) reader.fail(key, TableReader::describe(given), range.describe());
 }
 
 toml::table parseToml(std::string_view text, const std::string& source) {
@@ -216,11 +361,9 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
     const toml::table* t = getTable(root, "track", src, true);
     TableReader track(t, src, "track.");
-    sc.track.amplitude = track.getQuantity("amplitude", Dimension::Length);
-    if (sc.track.amplitude < 0) track.fail("amplitude", fmt::format("{}", sc.track.amplitude), "a length ≥ 0");
-    sc.track.railLength = track.getQuantity("rail_length", Dimension::Length);
-    if (!(sc.track.railLength > 0)) track.fail("rail_length", "≤ 0", "a positive length");
-    sc.track.rails = int(track.getInt("rails", 0, 0));
+    sc.track.amplitude = track.getRanged("amplitude");
+    sc.track.railLength = track.getRanged("rail_length");
+    sc.track.rails = int(track.getRanged("rails", 0));
     sc.track.mirror = track.getBool("mirror", false);
     sc.entry = track.getString("entry", {"lead", "synchronized"}, "lead") == "lead" ? TrackEntry::Lead
                                                                                   : TrackEntry::Synchronized;
@@ -247,25 +390,23 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
 void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
     TableReader run(getTable(root, "run", src, true), src, "run.");
-    sc.speed = run.getQuantity("speed", Dimension::Speed);
-    if (!(sc.speed > 0)) run.fail("speed", "≤ 0", "a positive speed");
-    sc.run.duration = run.getQuantity("duration", Dimension::Time);
-    if (!(sc.run.duration > 0)) run.fail("duration", "≤ 0", "a positive time");
+    sc.speed = run.getRanged("speed");
+    sc.run.duration = run.getRanged("duration");
     const std::vector<std::string> models = ModelRegistry::get().getNames();
     sc.model = run.getString("model", std::set<std::string>(models.begin(), models.end()));
-    sc.run.outputRate = run.getQuantity("output_rate", Dimension::Frequency, 500.0);
-    sc.filterCutoffHz = run.getQuantity("filter_cutoff", Dimension::Frequency, 20.0);
+    sc.run.outputRate = run.getRanged("output_rate", 500.0);
+    sc.filterCutoffHz = run.getRanged("filter_cutoff", 20.0);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
-        run.fail("filter_cutoff", fmt::format("{} Hz", sc.filterCutoffHz), "a cut-off below half the output rate");
+        run.fail("filter_cutoff", fmt::format("{} Hz", sc.filterCutoffHz),
+                 fmt::format("a cut-off below the Nyquist frequency, half the output rate ({} Hz)", sc.run.outputRate / 2));
+    checkSampleCount(run.locate("duration"), sc.run.duration, sc.run.outputRate);
     run.rejectUnknown();
 
     TableReader integ(getTable(root, "integrator", src, true), src, "integrator.");
     const auto methods = getIntegratorNames();
     sc.run.integrator.method = integ.getString("method", {methods.begin(), methods.end()});
-    sc.run.integrator.accuracy = integ.getQuantity("accuracy", Dimension::Dimensionless);
-    if (!(sc.run.integrator.accuracy > 0 && sc.run.integrator.accuracy < 1))
-        integ.fail("accuracy", fmt::format("{}", sc.run.integrator.accuracy), "a number in (0, 1)");
-    sc.run.integrator.maxStepSize = integ.getQuantity("max_step", Dimension::Time, 0.0);
+    sc.run.integrator.accuracy = integ.getRanged("accuracy");
+    sc.run.integrator.maxStepSize = integ.getRanged("max_step", 0.0);
     integ.rejectUnknown();
 }
 
@@ -286,29 +427,14 @@ void readLimits(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
     TableReader lim(getTable(root, "limits", src, false), src, "limits.");
     RunLimits& l = sc.run.limits;
-    auto ranged = [&](const char* key, Dimension dim, double fallback, double lo, double hi, bool loOpen,
-                      const std::string& expected) {
-        if (!lim.has(key)) return fallback;
-        const double v = lim.getQuantity(key, dim);
-        if (!std::isfinite(v) || v > hi || v < lo || (loOpen && v == lo))
-            lim.fail(key, TableReader::describe(*lim.require(key)), expected);
-        return v;
-    };
     l.enabled = lim.getBool("enabled", l.enabled);
-    l.flangeHeight = ranged("flange_height", Dimension::Length, l.flangeHeight, 0, 3 * units::inch, true,
-                            "a length in (0, 3 in]");
-    l.flangeClearance = ranged("flange_clearance", Dimension::Length, l.flangeClearance, 0, 3 * units::inch, false,
-                               "a length in [0, 3 in]");
-    l.wheelsOffTime = ranged("wheels_off_time", Dimension::Time, l.wheelsOffTime, 0, 10, true,
-                             "a time in (0, 10 s] (omit it for the flanges' free-flight time)");
-    l.rolloverAngle = ranged("rollover_angle", Dimension::Angle, l.rolloverAngle, 0, 90 * units::degree, true,
-                             "an angle in (0, 90 deg] (omit it for the static rollover angle of the car)");
-    l.energyRunawayFraction = ranged("energy_runaway_fraction", Dimension::Dimensionless, l.energyRunawayFraction,
-                                     0, 100, true, "a number in (0, 100]");
-    l.maxWallTime = ranged("max_wall_time", Dimension::Time, l.maxWallTime, 0, 7 * 86400, true,
-                           "a time in (0 s, 7 days]");
-    sc.severeSeparationTime = ranged("severe_separation", Dimension::Time, sc.severeSeparationTime, 0, 1, false,
-                                     "a time in [0, 1 s]");
+    l.flangeHeight = lim.getRanged("flange_height", l.flangeHeight);
+    l.flangeClearance = lim.getRanged("flange_clearance", l.flangeClearance);
+    l.wheelsOffTime = lim.getRanged("wheels_off_time", l.wheelsOffTime);  // omitted: the flanges' free-flight time
+    l.rolloverAngle = lim.getRanged("rollover_angle", l.rolloverAngle);    // omitted: the car's static rollover angle
+    l.energyRunawayFraction = lim.getRanged("energy_runaway_fraction", l.energyRunawayFraction);
+    l.maxWallTime = lim.getRanged("max_wall_time", l.maxWallTime);
+    sc.severeSeparationTime = lim.getRanged("severe_separation", sc.severeSeparationTime);
     lim.rejectUnknown();
 }
 
@@ -328,12 +454,7 @@ void readReduced(const toml::table& root, const std::string& src, Scenario& sc) 
 void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
     sc.attribution.truckGravity = getStrictBool(attribution, "truck_gravity", true);
-    if (attribution.has("truck_mass_scale")) {
-        const double f = attribution.getQuantity("truck_mass_scale", units::Dimension::Dimensionless);
-        if (!(f >= 0.001 && f <= 1))
-            attribution.fail("truck_mass_scale", fmt::format("{}", f), "a plain number in [0.001, 1]");
-        sc.attribution.truckMassScale = f;
-    }
+    sc.attribution.truckMassScale = attribution.getRanged("truck_mass_scale", sc.attribution.truckMassScale);
     attribution.rejectUnknown();
 }
 

@@ -42,6 +42,38 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The accepted range of one scenario value, declared once: the loader (files and
+/// overrides), the command line's options and checkScenario (the Python module and
+/// every run) all test values against it. README.md, "Accepted ranges", lists them.
+struct ValueRange {
+    std::string key;               ///< scenario key ("run.speed", "car.roll_damping"), or a command-line option
+    units::Dimension dimension;
+    double low, high;              ///< [SI]
+    bool lowOpen = false, highOpen = false;
+    std::string_view unit;         ///< the unit messages print values and limits in ("mph")
+    bool integer = false;          ///< whole numbers only
+
+    bool contains(double si) const;
+    /// What is accepted: "a speed in [0.1 mph, 150 mph]".
+    std::string describe() const;
+    /// `si` in the message unit: "500 mph".
+    std::string format(double si) const;
+};
+
+/// The range of a scenario key ("run.speed", "integrator.accuracy"); every ranged key
+/// of the schema has one. std::out_of_range for a key without a declared range.
+const ValueRange& getValueRange(std::string_view key);
+const std::vector<ValueRange>& getValueRanges();
+
+/// Every value of a resolved scenario (after command-line options or Python keywords
+/// changed it) against its declared range and the cross-checks (filter cut-off below
+/// half the output rate): ScenarioError naming sc.source, the key, the value and the range.
+void checkScenario(const Scenario& sc);
+
+/// Refuses (ScenarioError) a run whose recorded history would exceed the memory limit
+/// (getMemoryLimitBytes, ROCKROLL_MAX_MEMORY_MB), with the estimate.
+void checkMemoryEstimate(const Scenario& sc, size_t channels);
+
 /// One `KEY=VALUE` override of a scenario key, applied to the parsed TOML before the
 /// scenario is read, so it goes through exactly the validation (and error messages)
 /// of the same key written in the file. `key` is a full dotted key

@@ -66,6 +66,7 @@ void checkSwitchesApply(const Scenario& sc) {
 }
 
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
+    checkScenario(sc);  // command-line options and Python keywords change a loaded scenario
     checkSwitchesApply(sc);
     const ModelDescriptor& d = getScenarioModel(sc);
     if (start.from && start.from->model != d.name)
@@ -79,6 +80,7 @@ ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
 
     const TrackMotion motion = makeTrackMotion(sc, start);
     const std::unique_ptr<TimeDomainModel> model = d.make(sc, motion);
+    checkMemoryEstimate(sc, model->getChannels().names.size());
     ScenarioRun run;
     run.result = model->simulate(sc, start.from ? start.from->y : std::vector<double>{});
     run.summary = summarizeRun(run.result, model->getChannels(), opt);

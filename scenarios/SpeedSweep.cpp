@@ -3,16 +3,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <mutex>
 #include <stdexcept>
 
 namespace rockroll {
 
 std::vector<double> getSweepSpeeds(const SweepSpec& s) {
-    if (!(s.stepMph > 0)) throw std::invalid_argument("sweep step must be positive");
-    if (!(s.toMph >= s.fromMph)) throw std::invalid_argument("sweep: --to-mph must not be below --from-mph");
+    const ValueRange& speed = getValueRange("run.speed");
+    for (const auto& [option, mph] : {std::pair{"--from-mph", s.fromMph}, std::pair{"--to-mph", s.toMph}})
+        if (!speed.contains(mph * units::mph))
+            throw ScenarioError(fmt::format("sweep: {} {} mph: expected {} (as run.speed)", option, mph, speed.describe()));
+    if (!(s.stepMph > 0 && std::isfinite(s.stepMph)))
+        throw ScenarioError(fmt::format("sweep: --step-mph {}: expected a positive, finite speed step [mph]", s.stepMph));
+    if (!(s.toMph >= s.fromMph))
+        throw ScenarioError(fmt::format("sweep: --to-mph {} is below --from-mph {}: expected to ≥ from", s.toMph,
+                                        s.fromMph));
+    const double count = std::floor((s.toMph - s.fromMph) / s.stepMph + 1e-9) + 1;
+    if (count > kMaxSweepSpeeds)
+        throw ScenarioError(fmt::format("sweep: --from-mph {} --to-mph {} --step-mph {} gives {:.0f} speeds: expected at "
+                                        "most {} per sweep (a larger step)",
+                                        s.fromMph, s.toMph, s.stepMph, count, kMaxSweepSpeeds));
     std::vector<double> v;
-    const long n = std::lround(std::floor((s.toMph - s.fromMph) / s.stepMph + 1e-9));
+    const long n = std::lround(count - 1);
     for (long k = 0; k <= n; ++k) v.push_back(s.fromMph + k * s.stepMph);
     if (s.direction == SweepDirection::Down) std::reverse(v.begin(), v.end());
     return v;
@@ -47,6 +60,10 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
             p.failed = true;
             p.error = e.what();
             next = RunStart{};
+        } catch (...) {
+            p.failed = true;
+            p.error = "an error that is not a std::exception";
+            next = RunStart{};
         }
         out.push_back(p);
         if (onPoint) onPoint(out.back());
@@ -56,7 +73,11 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
 
 std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
                                                const std::function<void(const SweepPoint&)>& onPoint) {
-    for (const auto& spec : specs) checkSwitchesApply(spec.scenario);  // a scenario error must not end a thread
+    for (const auto& spec : specs) {  // a scenario error is bad input, found before any thread starts
+        checkScenario(spec.scenario);
+        checkSwitchesApply(spec.scenario);
+        getSweepSpeeds(spec);
+    }
     std::vector<std::vector<SweepPoint>> results(specs.size());
     std::mutex callback;
     auto report = [&](const SweepPoint& p) {

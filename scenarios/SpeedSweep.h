@@ -30,7 +30,12 @@ struct SweepPoint {
     RunSummary summary;      ///< valid unless failed
 };
 
+/// The most speeds one sweep visits (so that a tiny --step-mph is refused, not run for days).
+inline constexpr double kMaxSweepSpeeds = 10000;
+
 /// The speeds a sweep visits, in order (inclusive of both ends, to 1e-9 mph).
+/// ScenarioError when an end speed is outside run.speed's range, the step is not
+/// positive, the ends are reversed or there would be more than kMaxSweepSpeeds.
 std::vector<double> getSweepSpeeds(const SweepSpec& spec);
 
 /// One sweep. onPoint is called after every speed (from this thread).

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <regex>
 
 using namespace rockroll;
@@ -81,4 +84,83 @@ TEST(ScenarioLoader, CommandLineRejectsABadScenarioWithNonZeroExit) {
     EXPECT_NE(msg.find("bad_scenario.toml"), std::string::npos) << msg;
     EXPECT_NE(msg.find("track.amplitude"), std::string::npos) << msg;
     EXPECT_NE(msg.find("parsecs"), std::string::npos) << msg;
+}
+
+// Issue 12: one declared range per value, NaN and infinity refused everywhere, integers
+// that do not wrap, and the file's line in every message.
+TEST(ScenarioLoader, RangesRefuseNonFiniteOutOfRangeAndWrappedValues) {
+    using test_cases::replaceOnce;
+    // kMinimalScenarioToml starts with a newline: [car] is line 2, amplitude line 5, speed line 8, accuracy line 13.
+    const std::string rails = errorOf(replaceOnce(kGood, "rail_length = \"39 ft\"", "rail_length = \"39 ft\"\nrails = 4294967297"));
+    EXPECT_NE(rails.find("case.toml:7: key 'track.rails' = 4294967297: expected an integer in [0, 100000]"),
+              std::string::npos) << rails;
+    const std::string nanAccuracy = errorOf(replaceOnce(kGood, "accuracy = 1e-4", "accuracy = nan"));
+    EXPECT_NE(nanAccuracy.find("case.toml:13: key 'integrator.accuracy' = nan: expected a number in [1e-10, 0.1]"),
+              std::string::npos) << nanAccuracy;
+    const std::string fast = errorOf(replaceOnce(kGood, "\"16.5 mph\"", "\"500 mph\""));
+    EXPECT_NE(fast.find("case.toml:8: key 'run.speed'"), std::string::npos) << fast;
+    EXPECT_NE(fast.find("expected a speed in [0.1 mph, 150 mph]"), std::string::npos) << fast;
+    const std::string deep = errorOf(replaceOnce(kGood, "\"0.75 in\"", "\"50 in\""));
+    EXPECT_NE(deep.find("case.toml:5: key 'track.amplitude'"), std::string::npos) << deep;
+    EXPECT_NE(deep.find("[0 in, 3 in]"), std::string::npos) << deep;
+    const std::string nanRatio = errorOf(replaceOnce(kGood, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\ncenter_plate_rim_points = nan"));
+    EXPECT_NE(nanRatio.find("case.toml:4: key 'car.center_plate_rim_points' = nan"), std::string::npos) << nanRatio;
+    EXPECT_NE(errorOf(replaceOnce(kGood, "accuracy = 1e-4", "accuracy = 1e-14")).find("integrator.accuracy"), std::string::npos);
+    EXPECT_NE(errorOf(replaceOnce(kGood, "\"20 s\"", "\"1e9 s\"")).find("run.duration"), std::string::npos);
+    EXPECT_NE(errorOf(replaceOnce(kGood, "\"20 s\"", "\"20 s\"\noutput_rate = \"1e9 Hz\"")).find("run.output_rate"),
+              std::string::npos);
+    EXPECT_EQ(errorOf(kGood), "");
+}
+
+TEST(ScenarioLoader, CheckScenarioRefusesValuesChangedAfterLoading) {
+    const Scenario good = parseScenario(kGood, "case.toml");
+    EXPECT_NO_THROW(checkScenario(good));
+    auto errorAfter = [&](const std::function<void(Scenario&)>& change) {
+        Scenario sc = good;
+        change(sc);
+        try {
+            checkScenario(sc);
+        } catch (const ScenarioError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.speed = 500 * units::mph; }).find("case.toml: key 'run.speed' = 500 mph"),
+              std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.car.springVerticalRate = std::nan(""); }).find("car.spring_vertical_rate"),
+              std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.run.duration = 0.001; }).find("[0.05 s, 3600 s]"), std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) {
+                  sc.run.duration = 0.2, sc.run.outputRate = 10, sc.filterCutoffHz = 2;
+              }).find("expected at least 4 output intervals, a duration ≥ 0.4 s"),
+              std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.filterCutoffHz = 300; }).find("Nyquist"), std::string::npos);
+}
+
+TEST(ScenarioLoader, MemoryEstimateRefusesARunAboveTheLimit) {
+    Scenario sc = parseScenario(kGood, "case.toml");
+    // 20 s at 500 Hz, 40 channels: 10001 rows of 41 doubles plus row overhead, about 3.6 MiB.
+    EXPECT_NEAR(estimateHistoryBytes(20, 500, 40), 10001.0 * (41 * 8 + 40), 1e-6);
+    ASSERT_EQ(setenv("ROCKROLL_MAX_MEMORY_MB", "1", 1), 0);
+    try {
+        checkMemoryEstimate(sc, 40);
+        ADD_FAILURE() << "a 3.6 MiB history passed a 1 MiB limit";
+    } catch (const ScenarioError& e) {
+        EXPECT_NE(std::string(e.what()).find("10001 samples x 41 channels, about 4 MiB"), std::string::npos) << e.what();
+    }
+    ASSERT_EQ(setenv("ROCKROLL_MAX_MEMORY_MB", "10", 1), 0);
+    EXPECT_NO_THROW(checkMemoryEstimate(sc, 40));
+    ASSERT_EQ(setenv("ROCKROLL_MAX_MEMORY_MB", "lots", 1), 0);
+    EXPECT_THROW(getMemoryLimitBytes(), std::invalid_argument);
+    unsetenv("ROCKROLL_MAX_MEMORY_MB");
+    EXPECT_EQ(getMemoryLimitBytes(), 2048.0 * 1024 * 1024);
+}
+
+TEST(ScenarioLoader, EveryDeclaredRangeIsInTheReadme) {
+    std::ifstream in(std::string(ROCKROLL_SOURCE_DIR) + "/README.md");
+    const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const ValueRange& r : getValueRanges()) {
+        if (r.key.rfind("car.", 0) == 0) continue;  // the car's parameters: finite and ≥ 0 (README says so)
+        EXPECT_NE(readme.find("| `" + r.key + "` | " + r.describe() + " |"), std::string::npos) << r.key;
+    }
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <regex>
 #include <set>
 #include <toml++/toml.h>
 
@@ -121,7 +122,12 @@ TEST(ScenarioOverrides, BareKeysOnlyWhereAllowedAndUnambiguous) {
 }
 
 TEST(ScenarioOverrides, BadValuesGetTheFilesOwnMessages) {
-    auto fileError = [](const std::string& text) { return errorOf([&] { parseScenario(text, "case.toml"); }); };
+    // The same message but for the line: the file's error names it ("case.toml:8:"), an override has none.
+    auto fileError = [](const std::string& text) {
+        const std::string e = errorOf([&] { parseScenario(text, "case.toml"); });
+        EXPECT_TRUE(std::regex_search(e, std::regex("^case\\.toml:[0-9]+: key"))) << e;
+        return std::regex_replace(e, std::regex("^case\\.toml:[0-9]+: "), "case.toml: ");
+    };
     EXPECT_EQ(errorOf([] { withOverrides({{"car.side_bearing_clearance", "-1 in"}}); }),
               fileError(test_cases::replaceOnce(kCase, "base = \"70ton-loaded\"",
                                 "base = \"70ton-loaded\"\nside_bearing_clearance = \"-1 in\"")));
