@@ -1,5 +1,6 @@
 // rockroll: freight-car rock-and-roll simulator (command line).
 #include "app/Commands.h"
+#include "app/Output.h"
 #include "app/Provenance.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ModelRegistry.h"
@@ -12,6 +13,7 @@
 
 int main(int argc, char** argv) {
     using namespace rockroll;
+    app::installInterruptHandler();  // first: before any thread starts
     CLI::App cli{"rockroll — freight-car rock and roll on staggered jointed track (Simbody models).\n"
                  "With no sub-command: the default case, 70-ton loaded car, 0.75 in, 16.5 mph, full car, 20 s."};
     cli.require_subcommand(0, 1);
@@ -20,6 +22,17 @@ int main(int argc, char** argv) {
     const std::vector<std::string> modelNames = registry.getNames(), multibodyNames = registry.getMultibodyNames();
     std::string modelHelp;
     for (const auto& m : registry.getModels()) modelHelp += fmt::format("  {:<9} {}\n", m.name, m.description);
+
+    // --set KEY=VALUE (repeatable) and --out DIR / --force, the same on run, steady, sweep and modes.
+    auto addCommonOptions = [](CLI::App* cmd, app::CommonOptions& common, const std::string& outHelp) {
+        cmd->add_option("--set", common.sets,
+                        "KEY=VALUE: override a scenario key (repeatable), with its unit, e.g. "
+                        "--set car.side_bearing_clearance=\"0.25 in\" --set run.speed=\"14 mph\"")
+            ->expected(1)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        cmd->add_option("--out", common.outDir, outHelp);
+        cmd->add_flag("--force", common.force, "replace an existing non-empty output directory");
+    };
 
     app::RunOptions run;
     CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
@@ -33,7 +46,8 @@ int main(int argc, char** argv) {
     runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
         ->check(CLI::NonNegativeNumber);
     runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(CLI::PositiveNumber);
-    runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
+    addCommonOptions(runCmd, run,
+                     "output directory: history.csv, summary.json (default out/<scenario>-<model>)");
     runCmd->add_option("--max-wall-s", run.maxWallS, "wall-time limit; past it the run fails (exit 3) [s]")
         ->check(CLI::PositiveNumber);
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
@@ -47,6 +61,7 @@ int main(int argc, char** argv) {
     steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
     steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(CLI::PositiveNumber);
     steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
+    addCommonOptions(steadyCmd, steady, "write steady.csv and steady.json into this directory");
     steadyCmd->add_option("--stability", steady.stabilityMethod,
                           "fold: each stretch between folds by Floquet on the time-domain twin at its middle point; "
                           "floquet: every point (slow); none")
@@ -75,6 +90,7 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
+    addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
 
     app::ModesOptions modes;
     CLI::App* modesCmd = cli.add_subcommand(
@@ -83,6 +99,7 @@ int main(int argc, char** argv) {
     modesCmd->add_option("--model", modes.model, fmt::format("{} (the multibody models)", fmt::join(multibodyNames, " | ")))
         ->check(CLI::IsMember(multibodyNames));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
+    addCommonOptions(modesCmd, modes, "write modes.csv and modes.json into this directory");
 
     app::ValidateOptions validate;
     CLI::App* validateCmd = cli.add_subcommand("validate", "regenerate results/: REPORT.md, CSV data and plots");

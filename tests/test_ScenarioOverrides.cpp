@@ -166,11 +166,13 @@ TEST(ScenarioOverrides, SchemaIsWhatTheLoaderReadsAndTheWriterWrites) {
     Scenario sc = getDefaultScenario();
     sc.run.limits.wheelsOffTime = 0.5;
     sc.run.limits.rolloverAngle = 0.3;
+    sc.track.measured = {{0, 0, 0}, {1, 0.01, 0}};  // the writer gives taper and repeat with a measured table
     std::set<std::string> written;
     collectKeys(toml::parse(formatScenarioToml(sc)), "", written);
     const std::set<std::string> schema(getScenarioKeys().begin(), getScenarioKeys().end());
     // The writer gives the car inline (car.name and every parameter); car.base and car.file
-    // are the two other ways a file names its car.
-    written.insert({"car.base", "car.file"});
+    // are the two other ways a file names its car. It gives a measured track inline
+    // ([[track.measured]]); track.file is the other way to give one.
+    written.insert({"car.base", "car.file", "track.file"});
     EXPECT_EQ(written, schema);
 }
