@@ -48,6 +48,7 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
 
 nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command) {
     nlohmann::ordered_json j = toJson(run.summary);
+    if (!sc.track.measured.empty()) j["amplitude_in"] = nullptr;  // a measured track has no sine amplitude
     j["provenance"] = makeProvenance(sc, command);
     return j;
 }
@@ -90,6 +91,7 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
         j = toJson(p.summary);
         j["failed"] = false;
     }
+    if (!spec.scenario.track.measured.empty()) j["amplitude_in"] = nullptr;  // no sine amplitude
     j["direction"] = p.direction;
     j["start"] = p.start;
     Scenario at = spec.scenario;

@@ -88,8 +88,10 @@ void printOverrides(const Scenario& sc) {
 }
 
 void printSummary(const RunSummary& s, const Scenario& sc) {
-    fmt::print("rockroll — {} model, {} car, {:.2f} in cross-level, {:.1f} mph, {:g} s simulated\n", s.model, s.car,
-               s.amplitudeIn, s.speedMph, s.durationS);
+    const std::string track = sc.track.measured.empty() ? fmt::format("{:.2f} in cross-level", s.amplitudeIn)
+                                                        : std::string("measured track");
+    fmt::print("rockroll — {} model, {} car, {}, {:.1f} mph, {:g} s simulated\n", s.model, s.car, track, s.speedMph,
+               s.durationS);
     fmt::print("  scenario: {}\n", sc.source);
     printOverrides(sc);
     fmt::print("  regime: {}\n", s.regime);
@@ -259,8 +261,10 @@ int sweepCommand(const SweepOptions& o) {
     } else {
         for (size_t i = 0; i < specs.size(); ++i) {
             const Scenario& sc = specs[i].scenario;
-            fmt::print("\n{} model, {} car, {:.2f} in, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
-                       sc.track.amplitude / units::inch, specs[i].direction == SweepDirection::Up ? "up" : "down",
+            fmt::print("\n{} model, {} car, {}, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
+                       sc.track.measured.empty() ? fmt::format("{:.2f} in", sc.track.amplitude / units::inch)
+                                                 : std::string("measured track"),
+                       specs[i].direction == SweepDirection::Up ? "up" : "down",
                        specs[i].fresh ? "each speed from rest" : "state carried");
             fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}\n", "speed mph", "max roll", "steady roll",
                        "lift in", "wheel lb", "side brg lb", "regime");
