@@ -146,7 +146,7 @@ int runCommand(const RunOptions& o) {
     if (o.fromSummary) {
         const std::vector<ScenarioOverride> overrides = parseSets(o.sets);
         try {
-            sc = loadScenarioFromSummary(*o.fromSummary, overrides);
+            sc = loadScenarioFromSummaryWithOverrides(*o.fromSummary, overrides);
         } catch (const ScenarioError& e) {
             rethrowNamingFlag(e, overrides);
         }

@@ -58,7 +58,9 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
     return p;
 }
 
-Scenario loadScenarioFromSummary(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
+Scenario loadScenarioFromSummary(const std::string& path) { return loadScenarioFromSummaryWithOverrides(path, {}); }
+
+Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
     std::ifstream in(path);
     if (!in) throw ScenarioError(fmt::format("{}: cannot open summary file", path));
     nlohmann::json j;
