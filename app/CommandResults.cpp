@@ -48,6 +48,7 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
 
 nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command) {
     nlohmann::ordered_json j = toJson(run.summary);
+    if (!sc.track.measured.empty()) j["amplitude_in"] = nullptr;  // a measured track has no sine amplitude
     j["provenance"] = makeProvenance(sc, command);
     return j;
 }
@@ -90,6 +91,7 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
         j = toJson(p.summary);
         j["failed"] = false;
     }
+    if (!spec.scenario.track.measured.empty()) j["amplitude_in"] = nullptr;  // no sine amplitude
     j["direction"] = p.direction;
     j["start"] = p.start;
     Scenario at = spec.scenario;
@@ -101,11 +103,37 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
     return j;
 }
 
+nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points) {
+    nlohmann::ordered_json records = nlohmann::ordered_json::array();
+    for (nlohmann::ordered_json p : points) {
+        p.erase("provenance");
+        records.push_back(std::move(p));
+    }
+    return records;
+}
+
+nlohmann::ordered_json makeSteadyRecords(const nlohmann::ordered_json& steady) {
+    nlohmann::ordered_json records = nlohmann::ordered_json::array();
+    const auto& branches = steady.at("branches");
+    for (size_t b = 0; b < branches.size(); ++b)
+        for (const auto& p : branches[b].at("points")) {
+            nlohmann::ordered_json r{{"branch", b}, {"stability", branches[b].at("stability")}};
+            for (const auto& [key, value] : p.items()) r[key] = value;
+            records.push_back(std::move(r));
+        }
+    return records;
+}
+
 SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
     checkScenario(sc);
     if (!(o.toMph > o.fromMph))
         throw ScenarioError(fmt::format("steady: --to-mph {} must exceed --from-mph {}: expected to > from", o.toMph,
                                         o.fromMph));
+    if (!sc.track.measured.empty())
+        throw ScenarioError(fmt::format("{}: steady needs the rectified-sine track (its describing function takes the "
+                                        "sine's fundamental); this scenario has a measured track: expected [track] "
+                                        "without file or measured",
+                                        sc.source));
     SteadyResult r;
     const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
                                                                         sc.track.railLength);

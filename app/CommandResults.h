@@ -25,6 +25,10 @@ std::vector<SweepSpec> makeSweepSpecs(const std::vector<Scenario>& bases, const 
 /// One point of a sweep as `rockroll sweep --json` prints it (with its provenance).
 nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoint& p, const std::string& command);
 
+/// The sweep points (makeSweepPointJson) as flat records for sweep.csv: every key but
+/// the provenance, which stays in sweep.json.
+nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points);
+
 struct SteadyResult {
     double inputAmplitude = 0;  ///< C: the fundamental of the cross-level [m]
     std::string inputNote;      ///< what the input is, in words
@@ -37,6 +41,10 @@ SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o);
 /// `rockroll steady --json`.
 nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc, const SteadyOptions& o,
                                       const std::string& command);
+
+/// Every point of every branch of makeSteadyJson's document as a flat record for
+/// steady.csv: the branch's index and stability, then the point's keys.
+nlohmann::ordered_json makeSteadyRecords(const nlohmann::ordered_json& steady);
 
 struct ModesResult {
     std::vector<Mode> modes;

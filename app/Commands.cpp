@@ -19,6 +19,7 @@
 #include <fmt/ranges.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace rockroll::app {
 
@@ -26,10 +27,75 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The --set flags as scenario overrides; ScenarioError naming the flag when one is not KEY=VALUE.
+std::vector<ScenarioOverride> parseSets(const std::vector<std::string>& sets) {
+    std::vector<ScenarioOverride> overrides;
+    for (const std::string& text : sets) {
+        try {
+            overrides.push_back(parseScenarioOverride(text));
+        } catch (const ScenarioError&) {
+            throw ScenarioError(fmt::format("--set \"{}\": expected KEY=VALUE with a scenario key, e.g. "
+                                            "--set car.side_bearing_clearance=\"0.25 in\" or --set run.speed=\"14 mph\"",
+                                            text));
+        }
+    }
+    return overrides;
+}
+
+/// Rethrows a loader error caused by an override with the --set flag that gave it in front.
+[[noreturn]] void rethrowNamingFlag(const ScenarioError& e, const std::vector<ScenarioOverride>& overrides) {
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
+        std::string key;
+        try {
+            key = resolveScenarioKey(o->key, OverrideKeys::FullOnly);
+        } catch (const ScenarioError& unknown) {
+            throw ScenarioError(fmt::format("--set \"{}={}\": {}", o->key, o->value, unknown.what()));
+        }
+        if (std::string_view(e.what()).find("key '" + key + "'") != std::string_view::npos)
+            throw ScenarioError(fmt::format("--set \"{}={}\": {}", o->key, o->value, e.what()));
+    }
+    throw e;
+}
+
+/// The scenario file with the --set overrides applied (through the loader's validation).
+Scenario loadWithSets(const std::string& path, const std::vector<std::string>& sets) {
+    const std::vector<ScenarioOverride> overrides = parseSets(sets);
+    try {
+        return loadScenarioFile(path, overrides);
+    } catch (const ScenarioError& e) {
+        rethrowNamingFlag(e, overrides);
+    }
+}
+
+/// A command-line flag and a --set of the scenario key it sets may not both be given.
+void checkFlagAgainstSets(bool flagGiven, const char* flag, const char* key, const std::vector<std::string>& sets) {
+    if (!flagGiven) return;
+    for (const ScenarioOverride& o : parseSets(sets))
+        if (o.key == key)
+            throw ScenarioError(fmt::format("{} and --set \"{}={}\" both set '{}': expected one of them", flag, o.key,
+                                            o.value, key));
+}
+
+/// --amplitude-in sets the rectified sine's amplitude, which a measured track does not have.
+void checkAmplitudeFlag(bool flagGiven, const Scenario& sc) {
+    if (flagGiven && !sc.track.measured.empty())
+        throw ScenarioError(fmt::format("--amplitude-in: {} has a measured track ([track] file or measured), which "
+                                        "has no rectified-sine amplitude; expected no --amplitude-in",
+                                        sc.source));
+}
+
+/// The --set overrides applied, as printed under a text summary.
+void printOverrides(const Scenario& sc) {
+    for (const auto& [key, text] : sc.overrides) fmt::print("  --set {} = {}\n", key, text);
+}
+
 void printSummary(const RunSummary& s, const Scenario& sc) {
-    fmt::print("rockroll — {} model, {} car, {:.2f} in cross-level, {:.1f} mph, {:g} s simulated\n", s.model, s.car,
-               s.amplitudeIn, s.speedMph, s.durationS);
+    const std::string track = sc.track.measured.empty() ? fmt::format("{:.2f} in cross-level", s.amplitudeIn)
+                                                        : std::string("measured track");
+    fmt::print("rockroll — {} model, {} car, {}, {:.1f} mph, {:g} s simulated\n", s.model, s.car, track, s.speedMph,
+               s.durationS);
     fmt::print("  scenario: {}\n", sc.source);
+    printOverrides(sc);
     fmt::print("  regime: {}\n", s.regime);
     if (s.stoppedAtS >= 0)
         fmt::print("  STOPPED at t = {:.3f} s: {}\n  (the numbers below cover the run up to that time)\n", s.stoppedAtS,
@@ -70,26 +136,44 @@ int runDefaultCase() {
 int runCommand(const RunOptions& o) {
     if (o.scenario.empty() == !o.fromSummary)
         throw ScenarioError("run: give either a scenario file or --from-summary PATH/summary.json, not both");
-    Scenario sc = o.fromSummary ? loadScenarioFromSummary(*o.fromSummary) : loadScenarioFile(o.scenario);
+    Scenario sc;
+    if (o.fromSummary) {
+        const std::vector<ScenarioOverride> overrides = parseSets(o.sets);
+        try {
+            sc = loadScenarioFromSummaryWithOverrides(*o.fromSummary, overrides);
+        } catch (const ScenarioError& e) {
+            rethrowNamingFlag(e, overrides);
+        }
+    } else {
+        sc = loadWithSets(o.scenario, o.sets);
+    }
+    checkFlagAgainstSets(o.model.has_value(), "--model", "run.model", o.sets);
+    checkFlagAgainstSets(o.speedMph.has_value(), "--speed-mph", "run.speed", o.sets);
+    checkFlagAgainstSets(o.amplitudeIn.has_value(), "--amplitude-in", "track.amplitude", o.sets);
+    checkFlagAgainstSets(o.durationS.has_value(), "--duration-s", "run.duration", o.sets);
+    checkFlagAgainstSets(o.maxWallS.has_value(), "--max-wall-s", "limits.max_wall_time", o.sets);
+    checkAmplitudeFlag(o.amplitudeIn.has_value(), sc);
     if (o.model) sc.model = *o.model;
     if (o.speedMph) sc.speed = *o.speedMph * units::mph;
     if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
     if (o.durationS) sc.run.duration = *o.durationS;
     if (o.maxWallS) sc.run.limits.maxWallTime = *o.maxWallS;
+    const std::string stem = fs::path(o.fromSummary ? sc.source : o.scenario).stem().string();
+    OutputDirectory dir(o.outDir.empty() ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir),
+                        o.force, o.outDir.empty() ? "output directory (the default; choose one with --out)" : "--out");
     const ScenarioRun run = runScenario(sc);
 
-    const std::string stem = fs::path(o.fromSummary ? sc.source : o.scenario).stem().string();
-    const fs::path dir = o.outDir.empty() ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir);
-    fs::create_directories(dir);
     const nlohmann::ordered_json j = makeRunJson(run, sc, getCommandLine());
-    writeAtomically(dir / "history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
-    writeJsonFile(dir / "summary.json", j);
+    dir.write("history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
+    dir.writeJson("summary.json", j);
+    dir.commit();
 
     if (o.json) {
         fmt::print("{}\n", j.dump());
     } else {
         printSummary(run.summary, sc);
-        fmt::print("  wrote {} and {}\n", (dir / "history.csv").string(), (dir / "summary.json").string());
+        fmt::print("  wrote {} and {}\n", dir.getFinalPath("history.csv").string(),
+                   dir.getFinalPath("summary.json").string());
     }
     if (run.result.stop) {
         fmt::print(stderr, "rockroll: the car {} at t = {:.3f} s: {}\n", run.result.stop->regime, run.result.stop->time,
@@ -100,14 +184,26 @@ int runCommand(const RunOptions& o) {
 }
 
 int steadyCommand(const SteadyOptions& o) {
-    Scenario sc = loadScenarioFile(o.scenario);
+    Scenario sc = loadWithSets(o.scenario, o.sets);
+    checkFlagAgainstSets(o.amplitudeIn.has_value(), "--amplitude-in", "track.amplitude", o.sets);
+    checkAmplitudeFlag(o.amplitudeIn.has_value(), sc);
     if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
+    std::optional<OutputDirectory> dir;
+    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
     const SteadyResult r = calcSteady(sc, o);
+    const nlohmann::ordered_json j = makeSteadyJson(r, sc, o, getCommandLine());
+    if (dir) {
+        dir->write("steady.csv", [&](std::ostream& out) { writeRecordsCsv(out, makeSteadyRecords(j)); });
+        dir->writeJson("steady.json", j);
+        dir->commit();
+    }
     if (o.json) {
-        fmt::print("{}\n", makeSteadyJson(r, sc, o, getCommandLine()).dump());
+        fmt::print("{}\n", j.dump());
         return 0;
     }
-    fmt::print("rockroll steady — describing function, {} car\ninput: {}\n\n", sc.car.name, r.inputNote);
+    fmt::print("rockroll steady — describing function, {} car\ninput: {}\n", sc.car.name, r.inputNote);
+    printOverrides(sc);
+    fmt::print("\n");
     fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>14}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
                "side brg lb", "|mu|max", "stable");
     for (const auto& b : r.branches)
@@ -115,12 +211,23 @@ int steadyCommand(const SteadyOptions& o) {
             fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>14}\n", p.speedMph, p.rollAmplitudeDeg,
                        p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
                        toString(b.stability));
+    if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("steady.csv").string(),
+                        dir->getFinalPath("steady.json").string());
     return 0;
 }
 
 int sweepCommand(const SweepOptions& o) {
     std::vector<Scenario> bases;
-    for (const std::string& file : o.scenarios) bases.push_back(loadScenarioFile(file));
+    for (const std::string& file : o.scenarios) {
+        bases.push_back(loadWithSets(file, o.sets));
+        checkFlagAgainstSets(o.model.has_value(), "--model", "run.model", o.sets);
+        checkFlagAgainstSets(!o.amplitudesIn.empty(), "--amplitude-in", "track.amplitude", o.sets);
+        checkFlagAgainstSets(o.durationS.has_value(), "--duration-s", "run.duration", o.sets);
+        checkFlagAgainstSets(o.maxWallS.has_value(), "--max-wall-s", "limits.max_wall_time", o.sets);
+        checkAmplitudeFlag(!o.amplitudesIn.empty(), bases.back());
+    }
+    std::optional<OutputDirectory> dir;
+    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
     const std::vector<SweepSpec> specs = makeSweepSpecs(bases, o);
     size_t total = 0;
     for (const auto& s : specs) total += getSweepSpeeds(s).size();
@@ -131,13 +238,20 @@ int sweepCommand(const SweepOptions& o) {
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (size_t i = 0; i < specs.size(); ++i)
         for (const SweepPoint& p : results[i]) all.push_back(makeSweepPointJson(specs[i], p, getCommandLine()));
+    if (dir) {
+        dir->write("sweep.csv", [&](std::ostream& out) { writeRecordsCsv(out, makeSweepRecords(all)); });
+        dir->writeJson("sweep.json", all);
+        dir->commit();
+    }
     if (o.json) {
         fmt::print("{}\n", all.dump());
     } else {
         for (size_t i = 0; i < specs.size(); ++i) {
             const Scenario& sc = specs[i].scenario;
-            fmt::print("\n{} model, {} car, {:.2f} in, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
-                       sc.track.amplitude / units::inch, specs[i].direction == SweepDirection::Up ? "up" : "down",
+            fmt::print("\n{} model, {} car, {}, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
+                       sc.track.measured.empty() ? fmt::format("{:.2f} in", sc.track.amplitude / units::inch)
+                                                 : std::string("measured track"),
+                       specs[i].direction == SweepDirection::Up ? "up" : "down",
                        specs[i].fresh ? "each speed from rest" : "state carried");
             fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}\n", "speed mph", "max roll", "steady roll",
                        "lift in", "wheel lb", "side brg lb", "regime");
@@ -152,16 +266,28 @@ int sweepCommand(const SweepOptions& o) {
                            s.regime);
             }
         }
+        printOverrides(bases.front());
+        if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("sweep.csv").string(),
+                            dir->getFinalPath("sweep.json").string());
     }
     return progress.getFailed() ? kExitFailedPoints : kExitOk;
 }
 
 int modesCommand(const ModesOptions& o) {
-    Scenario sc = loadScenarioFile(o.scenario);
+    Scenario sc = loadWithSets(o.scenario, o.sets);
+    checkFlagAgainstSets(o.model.has_value(), "--model", "run.model", o.sets);
     if (o.model) sc.model = *o.model;
+    std::optional<OutputDirectory> dir;
+    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
     const ModesResult r = calcScenarioModes(sc);
+    const nlohmann::ordered_json j = makeModesJson(r, sc, getCommandLine());
+    if (dir) {
+        dir->write("modes.csv", [&](std::ostream& out) { writeRecordsCsv(out, j.at("modes")); });
+        dir->writeJson("modes.json", j);
+        dir->commit();
+    }
     if (o.json) {
-        fmt::print("{}\n", makeModesJson(r, sc, getCommandLine()).dump());
+        fmt::print("{}\n", j.dump());
         return 0;
     }
     fmt::print("rockroll modes — {} model, {} car: linearized about static equilibrium, every contact closed,\n"
@@ -173,6 +299,9 @@ int modesCommand(const ModesOptions& o) {
         fmt::print("{:<34}{:>10.3f}{:>10.3f}{:>10.2f}{:>18}{:>16}\n", m.name, m.frequencyHz, m.dampingRatio, m.energyShare,
                    e ? fmt::format("{:.2f}", e->frequencyHz) : "", e && e->reportHz > 0 ? fmt::format("{:.2f}", e->reportHz) : "");
     }
+    printOverrides(sc);
+    if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("modes.csv").string(),
+                        dir->getFinalPath("modes.json").string());
     return 0;
 }
 

@@ -13,17 +13,25 @@ inline constexpr int kExitNumericalFailure = 3;
 inline constexpr int kExitFailedPoints = 4;
 inline constexpr int kExitDerailed = 5;  ///< derailed or overturned
 
-struct RunOptions {
+/// What every command that reads a scenario shares: `--set KEY=VALUE` overrides of
+/// scenario keys (applied in order, through the loader's validation) and the output
+/// directory (`--out DIR`, replaced only with `--force`; app/Output.h OutputDirectory).
+struct CommonOptions {
+    std::vector<std::string> sets;      ///< each "KEY=VALUE" as given to --set
+    std::string outDir;                 ///< empty: run writes out/<scenario>-<model>, the others nothing
+    bool force = false;                 ///< replace an existing non-empty output directory
+};
+
+struct RunOptions : CommonOptions {
     std::string scenario;               ///< file path
     std::optional<std::string> model;
     std::optional<double> speedMph, amplitudeIn, durationS;
     std::optional<double> maxWallS;     ///< wall-time limit of the run [s]
     std::optional<std::string> fromSummary;  ///< rerun the run a summary.json describes
-    std::string outDir;                 ///< empty: out/<scenario>-<model>
     bool json = false;
 };
 
-struct SteadyOptions {
+struct SteadyOptions : CommonOptions {
     std::string scenario;
     std::optional<double> amplitudeIn;
     double fromMph = 10, toMph = 22;
@@ -31,7 +39,7 @@ struct SteadyOptions {
     std::string stabilityMethod = "fold";  ///< fold | floquet | none
 };
 
-struct SweepOptions {
+struct SweepOptions : CommonOptions {
     std::vector<std::string> scenarios;
     std::optional<std::string> model;
     std::vector<double> amplitudesIn;
@@ -43,7 +51,7 @@ struct SweepOptions {
     bool json = false, fresh = false;
 };
 
-struct ModesOptions {
+struct ModesOptions : CommonOptions {
     std::string scenario;
     std::optional<std::string> model;
     bool json = false;

@@ -65,7 +65,9 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
     return p;
 }
 
-Scenario loadScenarioFromSummary(const std::string& path) {
+Scenario loadScenarioFromSummary(const std::string& path) { return loadScenarioFromSummaryWithOverrides(path, {}); }
+
+Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
     std::ifstream in(path);
     if (!in) throw ScenarioError(fmt::format("{}: cannot open summary file", path));
     nlohmann::json j;
@@ -83,7 +85,9 @@ Scenario loadScenarioFromSummary(const std::string& path) {
         throw ScenarioError(fmt::format("{}: key 'start' = {}: expected \"rest\"; this point continued a speed sweep "
                                         "from the previous speed's state, so rerun the sweep instead",
                                         path, j["start"].dump()));
-    Scenario sc = parseScenario((*prov)["scenario_toml"].get<std::string>(), path + " (provenance.scenario_toml)");
+    Scenario sc =
+        parseScenario((*prov)["scenario_toml"].get<std::string>(), path + " (provenance.scenario_toml)", overrides);
+    const auto applied = sc.overrides;  // the new ones, recorded after the summary's own
     sc.sourceSha256 = (*prov).value("scenario_sha256", "");
     sc.source = (*prov).value("scenario_file", path);
     sc.carOverrides.clear();
@@ -96,6 +100,7 @@ Scenario loadScenarioFromSummary(const std::string& path) {
             if (o.is_object() && o.contains("key") && o.contains("value") && o["key"].is_string() &&
                 o["value"].is_string())
                 sc.overrides.emplace_back(o["key"].get<std::string>(), o["value"].get<std::string>());
+    sc.overrides.insert(sc.overrides.end(), applied.begin(), applied.end());
     return sc;
 }
 

@@ -16,6 +16,9 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
 /// The scenario a summary.json's provenance describes; ScenarioError naming the
 /// file and what is missing when it has none.
 Scenario loadScenarioFromSummary(const std::string& summaryPath);
+/// The same with `overrides` (--set) applied on top, recorded after the summary's own.
+Scenario loadScenarioFromSummaryWithOverrides(const std::string& summaryPath,
+                                              const std::vector<ScenarioOverride>& overrides);
 
 std::string getVersionString();
 

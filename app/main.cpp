@@ -1,12 +1,12 @@
 // rockroll: freight-car rock-and-roll simulator (command line).
 #include "app/Commands.h"
+#include "app/Output.h"
 #include "app/Provenance.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
 
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -52,19 +52,12 @@ CLI::Validator oneOf(const std::vector<std::string>& names) {
         "one of: " + list, "");
 }
 
-/// SIGINT/SIGTERM: exit 130 (documented) without running destructors from a handler.
-extern "C" void onInterrupt(int) {
-    static const char message[] = "\nrockroll: interrupted\n";
-    [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, message, sizeof message - 1);
-    _exit(130);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     using namespace rockroll;
-    std::signal(SIGINT, onInterrupt);
-    std::signal(SIGTERM, onInterrupt);
+    // SIGINT/SIGTERM remove temporaries and exit 130 (app/Output.h).
+    app::installInterruptHandler();  // first: before any thread starts
     // Every error is caught below; should one escape (a thread), exit 3, never abort.
     std::set_terminate([] {
         fmt::print(stderr, "rockroll: internal error: an exception escaped its handler\n");
@@ -83,6 +76,17 @@ int main(int argc, char** argv) {
     std::string modelHelp;
     for (const auto& m : registry.getModels()) modelHelp += fmt::format("  {:<9} {}\n", m.name, m.description);
 
+    // --set KEY=VALUE (repeatable) and --out DIR / --force, the same on run, steady, sweep and modes.
+    auto addCommonOptions = [](CLI::App* cmd, app::CommonOptions& common, const std::string& outHelp) {
+        cmd->add_option("--set", common.sets,
+                        "KEY=VALUE: override a scenario key (repeatable), with its unit, e.g. "
+                        "--set car.side_bearing_clearance=\"0.25 in\" --set run.speed=\"14 mph\"")
+            ->expected(1)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        cmd->add_option("--out", common.outDir, outHelp);
+        cmd->add_flag("--force", common.force, "replace an existing non-empty output directory");
+    };
+
     app::RunOptions run;
     CLI::App* runCmd = cli.add_subcommand("run", "run a scenario; write history.csv and summary.json");
     runCmd->add_option("scenario", run.scenario, "scenario file (TOML)")->check(CLI::ExistingFile);
@@ -95,7 +99,8 @@ int main(int argc, char** argv) {
     runCmd->add_option("--amplitude-in", run.amplitudeIn, "cross-level amplitude A [in]")
         ->check(inRange("track.amplitude", "in"));
     runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(inRange("run.duration", "s"));
-    runCmd->add_option("--out", run.outDir, "output directory (default out/<scenario>-<model>)");
+    addCommonOptions(runCmd, run,
+                     "output directory: history.csv, summary.json (default out/<scenario>-<model>)");
     runCmd->add_option("--max-wall-s", run.maxWallS, "wall-time limit; past it the run fails (exit 3) [s]")
         ->check(inRange("limits.max_wall_time", "s"));
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");
@@ -109,6 +114,7 @@ int main(int argc, char** argv) {
     steadyCmd->add_option("--from-mph", steady.fromMph, "lowest speed [mph]")->capture_default_str()->check(inRange("run.speed", "mph"));
     steadyCmd->add_option("--to-mph", steady.toMph, "highest speed [mph]")->capture_default_str()->check(inRange("run.speed", "mph"));
     steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
+    addCommonOptions(steadyCmd, steady, "write steady.csv and steady.json into this directory");
     steadyCmd->add_option("--stability", steady.stabilityMethod,
                           "fold: each stretch between folds by Floquet on the time-domain twin at its middle point; "
                           "floquet: every point (slow); none")
@@ -137,6 +143,7 @@ int main(int argc, char** argv) {
         ->check(inRange("limits.max_wall_time", "s"));
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
+    addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
 
     app::ModesOptions modes;
     CLI::App* modesCmd = cli.add_subcommand(
@@ -145,6 +152,7 @@ int main(int argc, char** argv) {
     modesCmd->add_option("--model", modes.model, fmt::format("{} (the multibody models)", fmt::join(multibodyNames, " | ")))
         ->check(oneOf(multibodyNames));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
+    addCommonOptions(modesCmd, modes, "write modes.csv and modes.json into this directory");
 
     app::ValidateOptions validate;
     CLI::App* validateCmd = cli.add_subcommand("validate", "regenerate results/: REPORT.md, CSV data and plots");

@@ -8,9 +8,15 @@
 //
 // for 0 ≤ s ≤ N·L_r (N = 0: no end), and level (0) outside. Alternatively a
 // table of measured cross-level c(s) (right minus left), optionally with a mean
-// profile p(s): z_R = p + c/2, z_L = p − c/2, linearly interpolated, level
-// outside the table.
+// profile p(s): z_R = p + c/2, z_L = p − c/2, linearly interpolated between rows
+// (heights continuous, slopes constant between rows). A table that does not start
+// (end) level rises from (returns to) level linearly over `taper` before its first
+// (after its last) row, so the rails never step; outside that, level. With `repeat`
+// the table repeats end to end with period (last − first distance); its last row
+// must then equal its first.
 #include <array>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace rockroll {
@@ -32,7 +38,22 @@ struct TrackSpec {
     int rails = 0;                   ///< N rail lengths of perturbation; 0 = unlimited
     bool mirror = false;             ///< swap left and right rails
     std::vector<MeasuredTrackSample> measured;  ///< replaces the rectified sine if not empty
+    double taper = 20 * 0.3048;      ///< run-in/run-out of a measured table not level at its ends [m]
+    bool repeat = false;             ///< the measured table repeats without end
 };
+
+/// Default of TrackSpec::taper as scenario files write it.
+inline constexpr const char* kDefaultTaperText = "20 ft";
+
+/// A measured track as CSV text (`source` names it in errors): `#` lines and blank lines
+/// are comments; the first other line is the header, naming each column with its length
+/// unit in brackets (in, ft, mm, m): `distance [ft], left [in], right [in]` and optionally
+/// `alignment [in]`, in any order; then one row per distance, increasing strictly, every
+/// cell a finite number. left and right are rail-top heights, positive up. The rows are
+/// placed so the table starts at s = 0 (at s = taper when its first row is not level, so
+/// its taper starts at 0). std::invalid_argument naming the line and column otherwise,
+/// or when alignment is not zero (the models take vertical rail input only).
+std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::string& source, double taper);
 
 /// Distance the car has travelled along the track, s(t). A run at constant
 /// speed V: s = s₀ + V·t. A run continuing a speed sweep starts from the

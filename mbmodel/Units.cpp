@@ -19,16 +19,24 @@ constexpr std::array kUnits{
     UnitDef{"m/s", Dimension::Speed, 1.0},       UnitDef{"km/h", Dimension::Speed, 1 / 3.6},
     UnitDef{"mph", Dimension::Speed, mph},       UnitDef{"N", Dimension::Force, 1.0},
     UnitDef{"kN", Dimension::Force, 1e3},        UnitDef{"lbf", Dimension::Force, lbf},
-    UnitDef{"lb", Dimension::Force, lbf},        UnitDef{"N/m", Dimension::Stiffness, 1.0},
-    UnitDef{"kN/mm", Dimension::Stiffness, 1e6}, UnitDef{"lb/in", Dimension::Stiffness, lbfPerInch},
+    UnitDef{"lb", Dimension::Force, lbf},
+    // A mass where a weight is expected: its weight under standard gravity (Units.h).
+    UnitDef{"kg", Dimension::Force, g},          UnitDef{"t", Dimension::Force, tonne * g},
+    UnitDef{"N/m", Dimension::Stiffness, 1.0},   UnitDef{"N/mm", Dimension::Stiffness, 1e3},
+    UnitDef{"kN/m", Dimension::Stiffness, 1e3},  UnitDef{"kN/mm", Dimension::Stiffness, 1e6},
+    UnitDef{"lb/in", Dimension::Stiffness, lbfPerInch},
     UnitDef{"lbf/in", Dimension::Stiffness, lbfPerInch},
     UnitDef{"s", Dimension::Time, 1.0},          UnitDef{"ms", Dimension::Time, 1e-3},
     UnitDef{"Hz", Dimension::Frequency, 1.0},    UnitDef{"kg*m^2", Dimension::MomentOfInertia, 1.0},
+    UnitDef{"kg·m²", Dimension::MomentOfInertia, 1.0},
     UnitDef{"lb*in*s^2", Dimension::MomentOfInertia, lbInS2},
     UnitDef{"lbf*in*s^2", Dimension::MomentOfInertia, lbInS2},
     UnitDef{"rad", Dimension::Angle, 1.0},       UnitDef{"deg", Dimension::Angle, degree},
     UnitDef{"N*m/rad", Dimension::AngularStiffness, 1.0},
     UnitDef{"lb*in/rad", Dimension::AngularStiffness, lbf * inch},
+    UnitDef{"N*s/m", Dimension::Damping, 1.0},   UnitDef{"N·s/m", Dimension::Damping, 1.0},
+    UnitDef{"lb*s/in", Dimension::Damping, lbfPerInch},
+    UnitDef{"lbf*s/in", Dimension::Damping, lbfPerInch},
 };
 
 std::string_view trim(std::string_view s) {
@@ -49,6 +57,7 @@ std::string_view getDimensionName(Dimension d) {
         case Dimension::MomentOfInertia: return "moment of inertia";
         case Dimension::Angle: return "angle";
         case Dimension::AngularStiffness: return "angular stiffness";
+        case Dimension::Damping: return "viscous damping";
         case Dimension::Dimensionless: return "plain number";
     }
     return "?";

@@ -15,8 +15,11 @@ constexpr double lbfPerInch = lbf / inch;    ///< N/m
 constexpr double lbInS2 = lbf * inch;        ///< lb·in·s² → kg·m²
 constexpr double degree = 3.14159265358979323846 / 180;
 
+constexpr double tonne = 1000;              ///< kg
+/// Force units include the mass units kg and t: a mass given where a weight (force) is
+/// expected is its weight under standard gravity g (1 kg → 9.80665 N, 1 t → 9806.65 N).
 enum class Dimension { Length, Speed, Force, Stiffness, Time, Frequency, MomentOfInertia,
-                       Angle, AngularStiffness, Dimensionless };
+                       Angle, AngularStiffness, Damping, Dimensionless };
 
 std::string_view getDimensionName(Dimension d);
 /// Units accepted for a dimension, for error messages ("in, ft, m, mm").

@@ -361,12 +361,44 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
     const toml::table* t = getTable(root, "track", src, true);
     TableReader track(t, src, "track.");
-    sc.track.amplitude = track.getRanged("amplitude");
-    sc.track.railLength = track.getRanged("rail_length");
+    const bool measured = track.has("file") || track.has("measured");
+    const std::string file = track.getText("file", "");  // its type first
+    if (track.has("file") && file.empty()) track.fail("file", "\"\"", "a track CSV path, relative to the scenario");
+    if (track.has("file") && track.has("measured"))
+        track.fail("file", TableReader::describe(*t->get("file")),
+                   "either 'file' (a track CSV) or [[track.measured]] rows, not both");
+    if (track.has("file"))
+        for (const char* sine : {"amplitude", "rails"})
+            if (track.has(sine))
+                track.fail(sine, TableReader::describe(*t->get(sine)),
+                           "no rectified-sine key with 'file' (the measured track replaces the sine)");
+    // The declared ranges (getValueRange) hold for the sine's keys; a measured track needs none of them.
+    sc.track.amplitude = measured ? track.getRanged("amplitude", 0.0) : track.getRanged("amplitude");
+    sc.track.railLength = measured ? track.getRanged("rail_length", sc.track.railLength) : track.getRanged("rail_length");
     sc.track.rails = int(track.getRanged("rails", 0));
     sc.track.mirror = track.getBool("mirror", false);
     sc.entry = track.getString("entry", {"lead", "synchronized"}, "lead") == "lead" ? TrackEntry::Lead
                                                                                   : TrackEntry::Synchronized;
+    // A measured table's run-in/run-out when not level at its ends, and whether it repeats (mbmodel/TrackInput.h).
+    sc.track.taper = track.getQuantity("taper", Dimension::Length,
+                                       units::parseQuantity(kDefaultTaperText, Dimension::Length));
+    if (!(sc.track.taper > 0) || !std::isfinite(sc.track.taper))
+        track.fail("taper", TableReader::describe(*t->get("taper")), "a finite positive length");
+    if (track.has("repeat") && !t->get("repeat")->is_boolean())
+        track.fail("repeat", TableReader::describe(*t->get("repeat")), "true or false");
+    sc.track.repeat = track.getBool("repeat", false);
+    if (track.has("file")) {
+        // Relative to the scenario file's folder.
+        const std::filesystem::path given = file;
+        const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(src).parent_path() / given;
+        std::string text;
+        try {
+            text = readFile(path.string(), "track file");
+            sc.track.measured = readTrackCsv(text, path.string(), sc.track.taper);
+        } catch (const std::exception& e) {
+            throw ScenarioError(fmt::format("{}: key 'track.file' = \"{}\": {}", src, given.string(), e.what()));
+        }
+    }
     if (track.has("measured")) {
         const toml::node* m = track.require("measured");
         const toml::array* arr = m->as_array();
@@ -383,6 +415,16 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
                 row.fail("distance", TableReader::describe(*arr->get(i)), "distances that increase strictly");
             sc.track.measured.push_back(sample);
         }
+        if (sc.track.measured.size() < 2)
+            track.fail("measured", TableReader::describe(*m), "at least two rows [[track.measured]]");
+    }
+    if (sc.track.repeat) {
+        const auto& rows = sc.track.measured;
+        if (rows.empty())
+            track.fail("repeat", "true", "a measured track to repeat ('file' or [[track.measured]]), or false");
+        if (rows.front().crossLevel != rows.back().crossLevel || rows.front().profile != rows.back().profile)
+            track.fail("repeat", "true", "a measured table whose last row equals its first (otherwise the rails "
+                                         "would step where it starts again), or false");
     }
     track.rejectUnknown();
 }
@@ -468,7 +510,8 @@ const std::vector<std::string>& getScenarioKeys() {
         std::vector<std::string> k{"description", "car.base", "car.file", "car.name"};
         for (const CarParameterInfo& info : getCarParameterTable()) k.push_back(std::string("car.") + info.key);
         for (const char* key :
-             {"track.amplitude", "track.rail_length", "track.rails", "track.mirror", "track.entry", "run.speed",
+             {"track.amplitude", "track.rail_length", "track.rails", "track.mirror", "track.entry", "track.file",
+              "track.taper", "track.repeat", "run.speed",
               "run.duration", "run.model", "run.output_rate", "run.filter_cutoff", "integrator.method",
               "integrator.accuracy", "integrator.max_step", "eom.linear_springs", "eom.lock_bolster_lateral",
               "eom.elastic_contacts", "eom.equal_lateral_shares", "eom.small_angles", "limits.enabled",
@@ -640,6 +683,7 @@ std::string formatSi(double value, units::Dimension dim) {
         case Dimension::MomentOfInertia: unit = "kg*m^2"; break;
         case Dimension::Angle: unit = "rad"; break;
         case Dimension::AngularStiffness: unit = "N*m/rad"; break;
+        case Dimension::Damping: unit = "N*s/m"; break;
         case Dimension::Dimensionless: break;
     }
     return fmt::format("{} {}", value, unit);
@@ -672,6 +716,8 @@ std::string formatScenarioToml(const Scenario& sc) {
                                        {"cross_level", formatSi(m.crossLevel, Dimension::Length)},
                                        {"profile", formatSi(m.profile, Dimension::Length)}});
         track.insert("measured", std::move(rows));
+        track.insert("taper", formatSi(sc.track.taper, Dimension::Length));
+        track.insert("repeat", sc.track.repeat);
     }
     root.insert("track", std::move(track));
 

@@ -80,3 +80,96 @@ TEST(TrackInput, MeasuredTableIsInterpolated) {
     t.measured = {{0, 0, 0}, {0, 0.01, 0}};
     EXPECT_THROW(TrackInput{t}, std::invalid_argument);
 }
+
+// ---- measured track: tapers, repeat, and the CSV reader (issue 13 item 4) ----
+
+namespace {
+/// What readTrackCsv throws for `csv`, or "".
+std::string csvError(const std::string& csv) {
+    try {
+        readTrackCsv(csv, "t.csv", 20 * 0.3048);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+// A table not level at its ends rises from level before its first row and returns to
+// level after its last, each over the taper: the rails never step (a table not ending
+// at zero used to drop to level right after its last row).
+TEST(TrackInput, MeasuredTableEndsAreTaperedNotStepped) {
+    TrackSpec t;
+    t.taper = 4;
+    t.measured = {{10, 0.02, 0.004}, {20, -0.01, 0.002}};
+    const TrackInput track(t);
+    const double h = 1e-9;
+    for (double edge : {10.0, 20.0, 6.0, 24.0}) {
+        const RailPoint a = track.calcRails(edge - h), b = track.calcRails(edge + h);
+        for (int i = 0; i < 2; ++i) EXPECT_NEAR(a.z[i], b.z[i], 1e-9) << "step at s = " << edge;
+    }
+    // Halfway down the end taper: half the last row's heights, slope -last/taper.
+    const RailPoint mid = track.calcRails(22);
+    EXPECT_NEAR(mid.z[1], 0.5 * (0.002 + (-0.01) / 2), 1e-15);
+    EXPECT_NEAR(mid.slope[1], -(0.002 + (-0.01) / 2) / 4, 1e-15);
+    EXPECT_NEAR(track.calcRails(8).z[0], 0.5 * (0.004 - 0.02 / 2), 1e-15);
+    EXPECT_EQ(track.calcRails(24.5).z[0], 0.0);
+    EXPECT_EQ(track.calcRails(5.5).z[1], 0.0);
+}
+
+TEST(TrackInput, MeasuredTableRepeatsWithItsLength) {
+    TrackSpec t;
+    t.repeat = true;
+    t.measured = {{0, 0, 0}, {3, 0.01, 0}, {10, 0, 0}};
+    const TrackInput track(t);
+    for (double s : {1.0, 4.5, 9.0})
+        for (int k : {1, 2, 7}) EXPECT_NEAR(track.calcCrossLevel(s + 10 * k), track.calcCrossLevel(s), 1e-12);
+    t.measured.back().crossLevel = 0.001;  // the seam would step
+    EXPECT_THROW(TrackInput{t}, std::invalid_argument);
+}
+
+TEST(TrackInput, ReadsCsvWithUnitsCommentsAndAnyColumnOrder) {
+    const std::string csv = "# a comment\n\nright [mm], distance [ft], left [in]\n# another\n0, 0, 0\n"
+                            "10, 10, 0.5\n\n20,20,-1\n";
+    const auto rows = readTrackCsv(csv, "t.csv", 1.0);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_NEAR(rows[1].distance, 10 * 0.3048, 1e-15);
+    EXPECT_NEAR(rows[1].crossLevel, 0.010 - 0.5 * 0.0254, 1e-15);         // right − left
+    EXPECT_NEAR(rows[1].profile, (0.010 + 0.5 * 0.0254) / 2, 1e-15);      // mean
+    EXPECT_NEAR(rows[2].distance, 20 * 0.3048, 1e-15);
+    // Placement: a level first row is at s = 0; otherwise the taper comes first.
+    const auto shifted = readTrackCsv("distance [m], left [m], right [m]\n5, 0.01, 0\n6, 0, 0\n", "t.csv", 2.0);
+    EXPECT_DOUBLE_EQ(shifted.front().distance, 2.0);
+    EXPECT_DOUBLE_EQ(shifted.back().distance, 3.0);
+    const auto level = readTrackCsv("distance [m], left [m], right [m], alignment [mm]\n5, 0, 0, 0\n6, 0.01, 0, 0\n",
+                                    "t.csv", 2.0);
+    EXPECT_DOUBLE_EQ(level.front().distance, 0.0);
+}
+
+TEST(TrackInput, CsvErrorsNameLineAndColumn) {
+    const std::string head = "distance [ft], left [in], right [in]\n";
+    struct Case {
+        std::string csv, expect;
+    };
+    const Case cases[] = {
+        {head + "0, 0, 0\n1, 0, 0\n1, 0.1, 0\n", "t.csv:4: column 1 (distance [ft]) = \"1\": distances must increase"},
+        {head + "0, 0, 0\n1, nan, 0\n", "t.csv:3: column 2 (left [in]) = \"nan\": expected a finite number"},
+        {head + "0, 0, 0\n1, 0.1, inf\n", "t.csv:3: column 3 (right [in]) = \"inf\": expected a finite number"},
+        {head + "0, 0, 0\n1, abc, 0\n", "t.csv:3: column 2 (left [in]) = \"abc\": expected a finite number"},
+        {head + "0, 0\n", "t.csv:2: 2 cells; expected 3"},
+        {"distance [ft], left [in]\n0, 0\n1, 0\n", "t.csv:1: the column 'right' is missing"},
+        {"distance [ft], left, right [in]\n", "t.csv:1: column 2 \"left\": the unit is missing"},
+        {"distance [ft], left [furlong], right [in]\n", "t.csv:1: column 2 \"left [furlong]\": unit \"furlong\""},
+        {"distance [ft], left [lbf], right [in]\n", "expected one of: in, ft, mm, m"},
+        {"distance [ft], height [in], right [in]\n", "t.csv:1: column 2 \"height [in]\": expected one of distance"},
+        {head + "0, 0, 0\n", "1 data row(s); expected at least two"},
+        {"# only a comment\n", "no header"},
+        {"distance [ft], left [in], right [in], alignment [in]\n0, 0, 0, 0\n1, 0, 0, 0.2\n",
+         "t.csv:3: column 4 (alignment [in]) = \"0.2\": the models take vertical rail input only"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.csv);
+        const std::string e = csvError(c.csv);
+        EXPECT_NE(e.find(c.expect), std::string::npos) << e;
+    }
+}

@@ -1,0 +1,254 @@
+// The engineer's workflow on the command line (issues 12 item 4 and 13 items 1-2):
+// --set KEY=VALUE on every command, --out DIR on run, sweep, steady and modes (every
+// file read back here), --force, and SIGINT/SIGTERM leaving nothing half-written.
+#include "tests/CsvReader.h"
+#include "tests/TestTmp.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+extern char** environ;
+
+namespace {
+
+const std::string kScenario = std::string(ROCKROLL_SCENARIO_DIR) + "/70ton-loaded.toml";
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct Outcome {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+/// `rockroll ARGS` (shell words) in `dir`.
+Outcome runCli(const fs::path& dir, const std::string& args) {
+    const std::string cmd = "cd '" + dir.string() + "' && '" + ROCKROLL_BIN + "' " + args + " > stdout.txt 2> stderr.txt";
+    const int status = std::system(cmd.c_str());
+    Outcome o;
+    o.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    o.out = readText(dir / "stdout.txt");
+    o.err = readText(dir / "stderr.txt");
+    return o;
+}
+
+/// Every number of a CSV table equals the same key of the JSON records, bit for bit
+/// (the CSV writes the shortest text that reads back to the double); text cells equal text.
+void expectCsvMatchesJson(const rockroll::test::CsvTable& table, const nlohmann::json& records) {
+    ASSERT_EQ(table.rows.size(), records.size());
+    for (size_t r = 0; r < table.rows.size(); ++r)
+        for (size_t c = 0; c < table.columns.size(); ++c) {
+            const std::string& key = table.columns[c];
+            const std::string& cell = table.rows[r][c];
+            SCOPED_TRACE("row " + std::to_string(r + 1) + " column " + key);
+            const auto& j = records[r];
+            if (!j.contains(key) || j[key].is_null()) {
+                EXPECT_EQ(cell, "");
+            } else if (j[key].is_number()) {
+                EXPECT_EQ(std::stod(cell), j[key].get<double>());
+            } else if (j[key].is_boolean()) {
+                EXPECT_EQ(cell, j[key].get<bool>() ? "true" : "false");
+            } else {
+                EXPECT_EQ(cell, j[key].get<std::string>());
+            }
+        }
+}
+
+}  // namespace
+
+TEST(CliWorkflow, SetChangesTheRunAndAppearsInItsProvenance) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    const std::string base = "run '" + kScenario + "' --model halfcar --duration-s 1 --json";
+    const Outcome plain = runCli(dir, base + " --out plain");
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const Outcome set = runCli(dir, base + " --out set --set car.side_bearing_clearance=\"0.25 in\" "
+                                            "--set run.speed=\"14 mph\"");
+    ASSERT_EQ(set.exitCode, 0) << set.err;
+    const auto a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(set.out);
+    EXPECT_DOUBLE_EQ(a.at("speed_mph").get<double>(), 16.5);
+    EXPECT_NEAR(b.at("speed_mph").get<double>(), 14, 1e-12);
+    EXPECT_NE(a.at("max_roll_deg"), b.at("max_roll_deg"));
+    const auto& prov = b.at("provenance");
+    ASSERT_EQ(prov.at("overrides").size(), 2u);
+    EXPECT_EQ(prov.at("overrides")[0].at("key"), "car.side_bearing_clearance");
+    EXPECT_EQ(prov.at("overrides")[0].at("value"), "0.25 in");
+    EXPECT_EQ(prov.at("overrides")[1].at("key"), "run.speed");
+    EXPECT_EQ(prov.at("overrides")[1].at("value"), "14 mph");
+    EXPECT_NEAR(prov.at("car_parameters").at("side_bearing_clearance").at("value").get<double>(), 0.25, 1e-12);
+    EXPECT_TRUE(a.at("provenance").at("overrides").empty());
+    // The summary.json written is what --json printed.
+    EXPECT_EQ(nlohmann::json::parse(readText(dir / "set" / "summary.json")), b);
+    // Rerunning from that summary reproduces the run, overrides and all.
+    const Outcome again = runCli(dir, "run --from-summary set/summary.json --out again --json");
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    const auto c = nlohmann::json::parse(again.out);
+    EXPECT_EQ(c.at("max_roll_deg"), b.at("max_roll_deg"));
+    EXPECT_EQ(c.at("provenance").at("overrides"), prov.at("overrides"));
+    // The text summary lists them too.
+    const Outcome text = runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out text "
+                                       "--set run.speed=\"14 mph\"");
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    EXPECT_NE(text.out.find("--set run.speed = 14 mph"), std::string::npos) << text.out;
+}
+
+TEST(CliWorkflow, SetErrorsNameFlagKeyValueAndExpectedForm) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    struct Case {
+        std::string args;
+        std::vector<std::string> expect;
+    };
+    const std::string run = "run '" + kScenario + "' --model halfcar --duration-s 0.2 ";
+    const Case cases[] = {
+        {run + "--set car.side_bearing_clearance=\"0.25 furlong\"",
+         {"--set \"car.side_bearing_clearance=0.25 furlong\"", "key 'car.side_bearing_clearance'", "expected a length"}},
+        {run + "--set car.side_bearing_clerance=\"0.25 in\"",
+         {"--set \"car.side_bearing_clerance=0.25 in\"", "no such scenario key", "car.side_bearing_clearance"}},
+        {run + "--set run.speed", {"--set \"run.speed\"", "expected KEY=VALUE"}},
+        {run + "--set run.speed=\"-3 mph\"", {"--set \"run.speed=-3 mph\"", "key 'run.speed'", "expected"}},
+        {run + "--speed-mph 12 --set run.speed=\"14 mph\"", {"--speed-mph and --set \"run.speed=14 mph\""}},
+        {"sweep '" + kScenario + "' --from-mph 14 --to-mph 15 --step-mph 1 --set track.amplitude=big",
+         {"--set \"track.amplitude=big\"", "key 'track.amplitude'"}},
+        {"modes '" + kScenario + "' --set car.gib_rate=\"3 N\"", {"--set \"car.gib_rate=3 N\"", "stiffness"}},
+        {"steady '" + kScenario + "' --set integrator.accuracy=abc", {"--set \"integrator.accuracy=abc\""}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.args);
+        const Outcome o = runCli(dir, c.args);
+        EXPECT_EQ(o.exitCode, 2) << o.err;
+        for (const auto& e : c.expect) EXPECT_NE(o.err.find(e), std::string::npos) << e << "\n" << o.err;
+        EXPECT_TRUE(o.out.empty()) << o.out;
+    }
+}
+
+TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    {
+        const Outcome o = runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.5 --out run");
+        ASSERT_EQ(o.exitCode, 0) << o.err;
+        const auto table = rockroll::test::parseCsvTable(readText(dir / "run" / "history.csv"));
+        EXPECT_GE(table.rows.size(), 200u);  // 0.5 s at 500 Hz
+        const auto t = table.numbers(table.columns.at(0));
+        EXPECT_NEAR(t.back(), 0.5, 1e-9);
+        const auto summary = nlohmann::json::parse(readText(dir / "run" / "summary.json"));
+        EXPECT_EQ(summary.at("duration_s"), 0.5);
+    }
+    {
+        const Outcome o = runCli(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 15 "
+                                        "--step-mph 1 --duration-s 1 --direction up --out sweep "
+                                        "--set car.side_bearing_clearance=\"0.25 in\"");
+        ASSERT_EQ(o.exitCode, 0) << o.err;
+        const auto json = nlohmann::json::parse(readText(dir / "sweep" / "sweep.json"));
+        ASSERT_EQ(json.size(), 2u);
+        EXPECT_EQ(json[0].at("provenance").at("overrides")[0].at("key"), "car.side_bearing_clearance");
+        const auto table = rockroll::test::parseCsvTable(readText(dir / "sweep" / "sweep.csv"));
+        EXPECT_EQ(table.find("provenance"), -1);
+        ASSERT_NE(table.find("speed_mph"), -1);
+        EXPECT_EQ(table.numbers("speed_mph"), (std::vector<double>{14, 15}));
+        expectCsvMatchesJson(table, json);
+    }
+    {
+        const Outcome o = runCli(dir, "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none "
+                                        "--out steady");
+        ASSERT_EQ(o.exitCode, 0) << o.err;
+        const auto json = nlohmann::json::parse(readText(dir / "steady" / "steady.json"));
+        nlohmann::json records = nlohmann::json::array();
+        for (size_t b = 0; b < json.at("branches").size(); ++b)
+            for (auto p : json.at("branches")[b].at("points")) {
+                p["branch"] = b;
+                p["stability"] = json.at("branches")[b].at("stability");
+                records.push_back(p);
+            }
+        ASSERT_GT(records.size(), 3u);
+        expectCsvMatchesJson(rockroll::test::parseCsvTable(readText(dir / "steady" / "steady.csv")), records);
+    }
+    {
+        const Outcome o = runCli(dir, "modes '" + kScenario + "' --model halfcar --out modes");
+        ASSERT_EQ(o.exitCode, 0) << o.err;
+        const auto json = nlohmann::json::parse(readText(dir / "modes" / "modes.json"));
+        ASSERT_FALSE(json.at("modes").empty());
+        const auto table = rockroll::test::parseCsvTable(readText(dir / "modes" / "modes.csv"));
+        expectCsvMatchesJson(table, json.at("modes"));
+        EXPECT_GT(table.numbers("frequency_hz").front(), 0);
+    }
+    for (const char* d : {"run", "sweep", "steady", "modes"}) {
+        EXPECT_FALSE(fs::exists(dir / (std::string(d) + ".partial"))) << d;
+        for (const auto& e : fs::directory_iterator(dir / d)) EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+    }
+}
+
+TEST(CliWorkflow, ExistingNonEmptyDirectoryNeedsForce) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    const std::string run = "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out res";
+    ASSERT_EQ(runCli(dir, run).exitCode, 0);
+    std::ofstream(dir / "res" / "notes.txt") << "mine\n";
+    const std::string before = readText(dir / "res" / "summary.json");
+    const Outcome refused = runCli(dir, run + " --speed-mph 14");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--out res: the directory exists and is not empty"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+    EXPECT_EQ(readText(dir / "res" / "summary.json"), before);
+    EXPECT_TRUE(fs::exists(dir / "res" / "notes.txt"));
+    // The same for the other commands, before they compute anything.
+    const Outcome modes = runCli(dir, "modes '" + kScenario + "' --out res");
+    EXPECT_EQ(modes.exitCode, 2) << modes.err;
+    // --force replaces the directory as a whole.
+    const Outcome forced = runCli(dir, run + " --speed-mph 14 --force");
+    ASSERT_EQ(forced.exitCode, 0) << forced.err;
+    EXPECT_NE(readText(dir / "res" / "summary.json"), before);
+    EXPECT_FALSE(fs::exists(dir / "res" / "notes.txt"));
+    EXPECT_FALSE(fs::exists(dir / "res.partial"));
+    EXPECT_FALSE(fs::exists(dir / "res.replaced"));
+    // An empty directory is fine without --force.
+    fs::create_directory(dir / "empty");
+    EXPECT_EQ(runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out empty").exitCode, 0);
+    EXPECT_TRUE(fs::exists(dir / "empty" / "summary.json"));
+}
+
+// A run interrupted while it computes: exit 130, its DIR.partial removed, DIR never created.
+TEST(CliWorkflow, InterruptLeavesNothingHalfWritten) {
+    for (int sig : {SIGINT, SIGTERM}) {
+        SCOPED_TRACE(sig == SIGINT ? "SIGINT" : "SIGTERM");
+        const fs::path dir = rockroll::test::makeTestTempDir(sig == SIGINT ? "int" : "term");
+        const fs::path out = dir / "res", partial = dir / "res.partial";
+        const std::string bin = ROCKROLL_BIN;
+        std::vector<std::string> args{bin, "run", kScenario, "--duration-s", "100", "--out", out.string()};
+        std::vector<char*> argv;
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, 2, (dir / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        pid_t pid = 0;
+        ASSERT_EQ(posix_spawn(&pid, bin.c_str(), &actions, nullptr, argv.data(), environ), 0);
+        posix_spawn_file_actions_destroy(&actions);
+        // Wait (without a time limit on the result) until the run has made its DIR.partial.
+        for (int i = 0; i < 6000 && !fs::exists(partial); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ASSERT_TRUE(fs::exists(partial));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));  // into the integration
+        ASSERT_EQ(kill(pid, sig), 0);
+        int status = 0;
+        ASSERT_EQ(waitpid(pid, &status, 0), pid);
+        ASSERT_TRUE(WIFEXITED(status));
+        EXPECT_EQ(WEXITSTATUS(status), 130) << readText(dir / "stderr.txt");
+        EXPECT_FALSE(fs::exists(partial));
+        EXPECT_FALSE(fs::exists(out));
+        EXPECT_NE(readText(dir / "stderr.txt").find("interrupted"), std::string::npos);
+    }
+}
