@@ -152,17 +152,17 @@ int sweepCommand(const SweepOptions& o) {
             fmt::print("\n{} model, {} car, {:.2f} in, sweep {} ({} from the previous speed)\n", sc.model, sc.car.name,
                        sc.track.amplitude / units::inch, specs[i].direction == SweepDirection::Up ? "up" : "down",
                        specs[i].fresh ? "each speed from rest" : "state carried");
-            fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}\n", "speed mph", "max roll", "steady roll",
-                       "lift in", "wheel lb", "side brg lb", "regime");
+            fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}  {}\n", "speed mph", "max roll", "steady roll",
+                       "lift in", "wheel lb", "side brg lb", "regime", "criteria");
             for (const SweepPoint& p : results[i]) {
                 if (p.failed) {
                     fmt::print("{:>10.2f}  numerical failure: {}\n", p.speedMph, p.error.substr(0, p.error.find('\n')));
                     continue;
                 }
                 const RunSummary& s = p.summary;
-                fmt::print("{:>10.2f}{:>12.2f}{:>14.2f}{:>12.2f}{:>14.0f}{:>14.0f}{:>10}\n", p.speedMph, s.maxRollDeg,
+                fmt::print("{:>10.2f}{:>12.2f}{:>14.2f}{:>12.2f}{:>14.0f}{:>14.0f}{:>10}  {}\n", p.speedMph, s.maxRollDeg,
                            s.steadyRollAmplitudeDeg, s.maxWheelLiftIn, s.maxWheelLoadLb, s.maxSideBearingLoadLb,
-                           s.regime);
+                           s.regime, s.describeCriteria());
             }
         }
     }

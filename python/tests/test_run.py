@@ -43,6 +43,7 @@ def test_history_is_a_structured_array_with_units(halfcar):
     assert halfcar.units["t_s"] == "s" and halfcar.units["roll_deg"] == "deg"
     assert halfcar.units["side_bearing_F_L_lb"] == "lb" and halfcar.units["car_body_vertical_in"] == "in"
     assert halfcar.units["energy_stored_J"] == "J" and halfcar.units["wedge_vertical_slip_F_L"] == "1"
+    assert halfcar.units["car_body_lateral_accel_g"] == "g" and halfcar.units["l_over_v_F1_L_ratio"] == "1"
     assert h["roll_deg"].dtype.metadata["unit"] == "deg"
     assert h.dtype.metadata["units"] == halfcar.units
     assert np.max(np.abs(h["roll_deg"])) == pytest.approx(halfcar.summary["max_roll_deg"], rel=1e-12)
