@@ -71,6 +71,16 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     return j;
 }
 
+std::string formatCriteriaTable(const RunSummary& s) {
+    std::string out = fmt::format("  criteria ({})\n", s.passesCriteria() ? "all evaluated pass" : "FAIL");
+    for (const Criterion& c : s.criteria)
+        out += c.evaluated() ? fmt::format("    {:<26}{:>10.3f} {:<6} limit {:<8g}{}\n", c.name, c.value, c.unit, c.limit,
+                                           c.passes() ? "pass" : "FAIL")
+                             : fmt::format("    {:<26}{:>10} {:<6} limit {:<8g}not evaluated (no such channel in this model)\n",
+                                           c.name, "-", c.unit, c.limit);
+    return out;
+}
+
 nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command) {
     nlohmann::ordered_json j = toJson(run.summary);
     j["provenance"] = makeProvenance(sc, command);

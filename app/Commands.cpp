@@ -43,6 +43,7 @@ void printSummary(const RunSummary& s, const Scenario& sc) {
                s.rawMaxSideBearingLoadLb);
     fmt::print("  max center-plate load            {:9.0f} lb    (raw {:.0f}, static {:.0f})\n",
                s.maxCenterPlateLoadLb, s.rawMaxCenterPlateLoadLb, s.staticCenterPlateLoadLb);
+    fmt::print("{}", formatCriteriaTable(s));
     fmt::print("  force maxima filtered: {}\n", s.filter);
     fmt::print("  {} integrator steps, {:.1f} s simulated in {:.2f} s wall ({:.1f}x real time)\n", s.steps,
                s.simTimeS, s.wallTimeS, s.simTimeS / s.wallTimeS);

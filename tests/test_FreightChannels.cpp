@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 using namespace rockroll;
@@ -86,9 +87,10 @@ TEST(FreightChannels, EveryModelDeclaresUniqueNamesWithUnitsAndTheFreightRoles) 
 
 TEST(FreightChannels, AtRestAccelerationsUnloadingAndLOverVAreZero) {
     for (const char* model : kModels) {
-        const ScenarioRun r = runScenario(makeCase(model, 0.0, 16.5, 0.2));
-        const ChannelLayout& l =
-            ModelRegistry::get().getModel(model).make(makeCase(model, 0, 16.5, 0.2), makeTrackMotion(makeCase(model, 0, 16.5, 0.2)))->getChannels();
+        const Scenario sc = makeCase(model, 0.0, 16.5, 0.2);
+        const ScenarioRun r = runScenario(sc);
+        const auto m = ModelRegistry::get().getModel(model).make(sc, makeTrackMotion(sc));
+        const ChannelLayout& l = m->getChannels();
         for (const auto& name : columnsWithRole(l, l.wheelUnloading))
             EXPECT_LT(maxAbs(test_cases::getColumn(r.result, name)), 1e-6) << model << " " << name;
         for (const auto& name : columnsWithRole(l, l.lOverV))
@@ -176,16 +178,33 @@ TEST(FreightChannels, MirroredInputMirrorsTheFreightChannels) {
         const auto lvL = col(ra, "l_over_v_F1_L_ratio"), lvR = col(rb, "l_over_v_F1_R_ratio");
         const auto ayA = col(ra, "car_body_lateral_accel_g"), ayB = col(rb, "car_body_lateral_accel_g");
         const auto azA = col(ra, "car_body_vertical_accel_g"), azB = col(rb, "car_body_vertical_accel_g");
-        const double peakU = maxAbs(uL), peakLv = maxAbs(lvL), peakAy = maxAbs(ayA), peakAz = maxAbs(azA);
+        const double peakU = maxAbs(uL), peakLv = maxAbs(lvL);
         EXPECT_GT(peakU, 0.1) << model;
-        EXPECT_GT(peakAy, 0.0) << model;
-        // Impacts are short and stiff; integration error shifts them slightly (as ModelInvariants).
+        EXPECT_GT(peakLv, 0.1) << model;
+        double worstU = 0, worstLv = 0;
         for (size_t i = 0; i < uL.size(); ++i) {
-            ASSERT_NEAR(uL[i], uR[i], 0.05 * peakU) << model << " " << i;
-            ASSERT_NEAR(lvL[i], -lvR[i], 0.05 * peakLv + 1e-9) << model << " " << i;
-            ASSERT_NEAR(ayA[i], -ayB[i], 0.05 * peakAy) << model << " " << i;
-            ASSERT_NEAR(azA[i], azB[i], 0.05 * peakAz) << model << " " << i;
+            worstU = std::max(worstU, std::abs(uL[i] - uR[i]));
+            worstLv = std::max(worstLv, std::abs(lvL[i] + lvR[i]));
         }
+        // Impacts are short and stiff; integration error shifts them slightly (as ModelInvariants).
+        EXPECT_LT(worstU, 0.05 * peakU) << model;
+        EXPECT_LT(worstLv, 0.05 * peakLv) << model;
+        // Accelerations peak at those impacts, so a shift of an impact by one output sample
+        // changes a sample by much of its peak: the filtered maxima are compared instead.
+        const RunSummary &sa = ra.summary, &sb = rb.summary;
+        EXPECT_GT(sa.maxCarBodyLateralAccelG, 0.05) << model;
+        EXPECT_NEAR(sa.maxCarBodyVerticalAccelG, sb.maxCarBodyVerticalAccelG, 0.03 * sa.maxCarBodyVerticalAccelG) << model;
+        EXPECT_NEAR(sa.maxCarBodyLateralAccelG, sb.maxCarBodyLateralAccelG, 0.03 * sa.maxCarBodyLateralAccelG) << model;
+        EXPECT_NEAR(sa.maxLOverV, sb.maxLOverV, 0.03 * sa.maxLOverV) << model;
+        // The lateral acceleration changes sign with the mirror, the vertical does not: the
+        // signed extremes swap.
+        EXPECT_NEAR(*std::max_element(ayA.begin(), ayA.end()), -*std::min_element(ayB.begin(), ayB.end()),
+                    0.05 * maxAbs(ayA)) << model;
+        EXPECT_NEAR(*std::min_element(azA.begin(), azA.end()), *std::min_element(azB.begin(), azB.end()),
+                    0.05 * maxAbs(azA)) << model;
+        std::cout << model << ": worst unloading " << worstU << " of " << peakU << ", L/V " << worstLv << " of "
+                  << peakLv << "; max az " << sa.maxCarBodyVerticalAccelG << " / " << sb.maxCarBodyVerticalAccelG
+                  << ", max ay " << sa.maxCarBodyLateralAccelG << " / " << sb.maxCarBodyLateralAccelG << "\n";
     }
 }
 
