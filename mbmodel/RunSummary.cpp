@@ -189,10 +189,13 @@ bool RunSummary::passesCriteria() const {
 }
 
 std::string RunSummary::describeCriteria() const {
-    std::string failed;
-    for (const Criterion& c : criteria)
-        if (c.evaluated() && !c.passes()) failed += (failed.empty() ? "" : ",") + c.name;
-    return failed.empty() ? "pass" : "FAIL " + failed;
+    std::string failed, unevaluated;
+    for (const Criterion& c : criteria) {
+        if (!c.evaluated()) unevaluated += (unevaluated.empty() ? "" : ",") + c.name;
+        else if (!c.passes()) failed += (failed.empty() ? "" : ",") + c.name;
+    }
+    return (failed.empty() ? "pass" : "FAIL " + failed) +
+           (unevaluated.empty() ? "" : " (not evaluated: " + unevaluated + ")");
 }
 
 }  // namespace rockroll

@@ -71,7 +71,8 @@ struct RunSummary {
     std::vector<Criterion> criteria;
     /// Every evaluated criterion passes.
     bool passesCriteria() const;
-    /// "pass", or "FAIL " and the failing criteria's names (for tables).
+    /// "pass", or "FAIL " and the failing criteria's names, then any criterion not
+    /// evaluated, e.g. "pass (not evaluated: l_over_v)" (for tables).
     std::string describeCriteria() const;
     std::string filter;
     double simTimeS = 0, wallTimeS = 0;

@@ -301,11 +301,14 @@ TEST(FreightCriteria, ValueAtOrBelowTheLimitPassesAboveFailsUnevaluatedIsIgnored
     EXPECT_TRUE(s.criteria[3].passes());
     EXPECT_FALSE(s.criteria[4].passes());  // 0.8 g > 0.75 g
     EXPECT_FALSE(s.passesCriteria());
-    EXPECT_EQ(s.describeCriteria(), "FAIL wheel_unloading,car_body_lateral_accel");
+    EXPECT_EQ(s.describeCriteria(), "FAIL wheel_unloading,car_body_lateral_accel (not evaluated: l_over_v)");
     limits.wheelUnloading = 1;
     limits.carBodyLateralAccelG = 0.8;
     s.criteria = evaluateCriteria(s, limits);
     EXPECT_TRUE(s.passesCriteria());
+    EXPECT_EQ(s.describeCriteria(), "pass (not evaluated: l_over_v)");
+    s.maxLOverV = 0.5;
+    s.criteria = evaluateCriteria(s, limits);
     EXPECT_EQ(s.describeCriteria(), "pass");
 }
 

@@ -55,7 +55,7 @@ def test_history_is_a_structured_array_with_units(halfcar):
 def test_every_model_runs_with_every_channel_in_a_unit(model):
     r = rockroll.run(LOADED, model=model, duration_s=0.5)
     assert r.summary["model"] == model
-    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "1"}
+    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "g", "1"}
     # Dimensionless channels are flags and codes only; everything else names its unit.
     assert all("_slip_" in n or n.startswith("truck_") for n, u in r.units.items() if u == "1"), r.units
     assert len(r.history) > 100
