@@ -39,11 +39,46 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["wheel_lift_longest_s"] = s.wheelLiftLongestS;
     j["energy_balance_error"] = std::isfinite(s.energyBalanceError) ? nlohmann::ordered_json(s.energyBalanceError)
                                                                     : nlohmann::ordered_json(nullptr);
+    // Freight channels and criteria (null: the model has no such channel).
+    auto valueOrNull = [](double x) { return std::isnan(x) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(x); };
+    j["max_wheel_unloading"] = valueOrNull(s.maxWheelUnloading);
+    j["raw_max_wheel_unloading"] = valueOrNull(s.rawMaxWheelUnloading);
+    j["max_l_over_v"] = valueOrNull(s.maxLOverV);
+    j["raw_max_l_over_v"] = valueOrNull(s.rawMaxLOverV);
+    j["max_car_body_vertical_accel_g"] = valueOrNull(s.maxCarBodyVerticalAccelG);
+    j["raw_max_car_body_vertical_accel_g"] = valueOrNull(s.rawMaxCarBodyVerticalAccelG);
+    j["max_car_body_lateral_accel_g"] = valueOrNull(s.maxCarBodyLateralAccelG);
+    j["raw_max_car_body_lateral_accel_g"] = valueOrNull(s.rawMaxCarBodyLateralAccelG);
+    j["trucks"] = nlohmann::ordered_json::array();
+    for (const TruckLoads& t : s.trucks)
+        j["trucks"].push_back({{"truck", t.truck},
+                               {"max_center_plate_load_lb", t.maxCenterPlateLoadLb},
+                               {"min_center_plate_load_lb", t.minCenterPlateLoadLb},
+                               {"max_side_bearing_L_load_lb", t.maxSideBearingLoadLb[0]},
+                               {"max_side_bearing_R_load_lb", t.maxSideBearingLoadLb[1]}});
+    j["criteria"] = nlohmann::ordered_json::array();
+    for (const Criterion& c : s.criteria)
+        j["criteria"].push_back({{"name", c.name},
+                                 {"value", valueOrNull(c.value)},
+                                 {"limit", c.limit},
+                                 {"unit", c.unit},
+                                 {"pass", c.evaluated() ? nlohmann::ordered_json(c.passes()) : nlohmann::ordered_json(nullptr)}});
+    j["criteria_pass"] = s.passesCriteria();
     j["filter"] = s.filter;
     j["sim_time_s"] = s.simTimeS;
     j["wall_time_s"] = s.wallTimeS;
     j["steps"] = s.steps;
     return j;
+}
+
+std::string formatCriteriaTable(const RunSummary& s) {
+    std::string out = fmt::format("  criteria ({})\n", s.passesCriteria() ? "all evaluated pass" : "FAIL");
+    for (const Criterion& c : s.criteria)
+        out += c.evaluated() ? fmt::format("    {:<26}{:>10.3f} {:<6} limit {:<8g}{}\n", c.name, c.value, c.unit, c.limit,
+                                           c.passes() ? "pass" : "FAIL")
+                             : fmt::format("    {:<26}{:>10} {:<6} limit {:<8g}not evaluated (no such channel in this model)\n",
+                                           c.name, "-", c.unit, c.limit);
+    return out;
 }
 
 nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command) {

@@ -15,6 +15,10 @@
 
 namespace rockroll::app {
 
+/// The summary's criteria as text lines for a terminal: name, value, limit, unit, verdict
+/// ("not evaluated" where the model has no such channel).
+std::string formatCriteriaTable(const RunSummary& s);
+
 /// summary.json: the summary's keys, then "provenance".
 nlohmann::ordered_json makeRunJson(const ScenarioRun& run, const Scenario& sc, const std::string& command);
 

@@ -111,6 +111,7 @@ void printSummary(const RunSummary& s, const Scenario& sc) {
                s.rawMaxSideBearingLoadLb);
     fmt::print("  max center-plate load            {:9.0f} lb    (raw {:.0f}, static {:.0f})\n",
                s.maxCenterPlateLoadLb, s.rawMaxCenterPlateLoadLb, s.staticCenterPlateLoadLb);
+    fmt::print("{}", formatCriteriaTable(s));
     fmt::print("  force maxima filtered: {}\n", s.filter);
     fmt::print("  {} integrator steps, {:.1f} s simulated in {:.2f} s wall ({:.1f}x real time)\n", s.steps,
                s.simTimeS, s.wallTimeS, s.simTimeS / s.wallTimeS);
@@ -253,17 +254,17 @@ int sweepCommand(const SweepOptions& o) {
                                                  : std::string("measured track"),
                        specs[i].direction == SweepDirection::Up ? "up" : "down",
                        specs[i].fresh ? "each speed from rest" : "state carried");
-            fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}\n", "speed mph", "max roll", "steady roll",
-                       "lift in", "wheel lb", "side brg lb", "regime");
+            fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}  {}\n", "speed mph", "max roll", "steady roll",
+                       "lift in", "wheel lb", "side brg lb", "regime", "criteria");
             for (const SweepPoint& p : results[i]) {
                 if (p.failed) {
                     fmt::print("{:>10.2f}  FAILED: {}\n", p.speedMph, p.error.substr(0, p.error.find('\n')));
                     continue;
                 }
                 const RunSummary& s = p.summary;
-                fmt::print("{:>10.2f}{:>12.2f}{:>14.2f}{:>12.2f}{:>14.0f}{:>14.0f}{:>10}\n", p.speedMph, s.maxRollDeg,
+                fmt::print("{:>10.2f}{:>12.2f}{:>14.2f}{:>12.2f}{:>14.0f}{:>14.0f}{:>10}  {}\n", p.speedMph, s.maxRollDeg,
                            s.steadyRollAmplitudeDeg, s.maxWheelLiftIn, s.maxWheelLoadLb, s.maxSideBearingLoadLb,
-                           s.regime);
+                           s.regime, s.describeCriteria());
             }
         }
         printOverrides(bases.front());

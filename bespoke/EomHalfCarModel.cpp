@@ -78,12 +78,18 @@ double EomHalfCarModel::calcLockedLinkDamping() const {
     return criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
 }
 
+double EomHalfCarModel::calcStaticWheelLoad() const {
+    const CarParameters& c = car_;
+    const double springLoad = (c.getCarBodyWeight() / 2 + c.bolsterWeight) / 2;
+    return springLoad + (c.wheelsetWeight + c.sideFrameWeight);  // per wheel of the equivalent wheelset
+}
+
 EomHalfCarModel::State EomHalfCarModel::makeStaticState() const {
     const CarParameters& c = car_;
     const double scale = c.contactStiffnessScale;
     const double carBodyLoad = c.getCarBodyWeight() / 2;
     const double springLoad = (carBodyLoad + c.bolsterWeight) / 2;
-    const double wheelLoad = springLoad + (c.wheelsetWeight + c.sideFrameWeight);  // per wheel of the equivalent wheelset
+    const double wheelLoad = calcStaticWheelLoad();
     const double delta = wheelLoad / (2 * scale * c.wheelRailStiffness);
     const double seatZ = c.springTopAboveRail - delta;
     const double Z = simp_.linearSprings ? springLoad / laws_.spring.rate
@@ -238,53 +244,59 @@ void EomHalfCarModel::calcEnergyRates(double t, const State& y, double* rates) c
 }
 
 void EomHalfCarModel::declareChannels() {
-    ChannelLayout& c = channels_;
+    ChannelTable<Sample>& c = channels_;
+    const double lb = units::lbf, in = units::inch, deg = units::degree;
     declareHalfCarBodyChannels(c);
     for (int side : {0, 1}) {
         const char* S = kSideName[side];
-        c.add(fmt::format("spring_F_{}_lb", S));
-        c.add(fmt::format("lateral_spring_F_{}_lb", S));
-        c.add(fmt::format("wedge_vertical_F_{}_lb", S));
-        c.add(fmt::format("wedge_vertical_slip_F_{}", S));
-        c.add(fmt::format("wedge_lateral_F_{}_lb", S));
-        c.add(fmt::format("wedge_lateral_slip_F_{}", S));
+        const int iv = 2 * side + kWedgeVertical, ih = 2 * side + kWedgeLateral;
+        c.add(fmt::format("spring_F_{}", S), "lb", [=](const Sample& s) { return s.forces.spring[side] / lb; });
+        c.add(fmt::format("lateral_spring_F_{}", S), "lb",
+              [=](const Sample& s) { return s.forces.lateralSpring[side] / lb; });
+        c.add(fmt::format("wedge_vertical_F_{}", S), "lb", [=](const Sample& s) { return s.forces.wedge[iv].force / lb; });
+        c.add(fmt::format("wedge_vertical_slip_F_{}", S), "",
+              [=](const Sample& s) { return s.forces.wedge[iv].slipping ? 1.0 : 0.0; });
+        c.add(fmt::format("wedge_lateral_F_{}", S), "lb", [=](const Sample& s) { return s.forces.wedge[ih].force / lb; });
+        c.add(fmt::format("wedge_lateral_slip_F_{}", S), "",
+              [=](const Sample& s) { return s.forces.wedge[ih].slipping ? 1.0 : 0.0; });
     }
-    c.add("bolster_roll_F_deg");
-    c.add("bolster_lateral_F_in");
+    c.add("bolster_roll_F", "deg", [=](const Sample& s) { return s.y[3 * Bolster] / deg; });
+    c.add("bolster_lateral_F", "in", [=](const Sample& s) { return s.y[3 * Bolster + 1] / in; });
     declareEquivalentWheelsetChannels(c, true);
     declareEnergyChannels(c);
+    declareHalfCarFreightChannels(c, calcStaticWheelLoad(), true);
+}
+
+EomHalfCarModel::Sample EomHalfCarModel::calcSample(double t, const State& y, const double* energyIntegrals) const {
+    Sample s;
+    s.forces = calcForces(t, y);
+    s.y = y;
+    const Forces& f = s.forces;
+    const RailState rail = rails_(t);
+    s.roll = y[3 * CarBody];
+    s.verticalFromStatic = y[3 * CarBody + 2] - staticCarBodyZ_;
+    s.lateral = y[3 * CarBody + 1];
+    s.crossLevel = rail.z[1] - rail.z[0];
+    s.centerPlate = f.rim[0] + f.rim[1];
+    for (int side : {0, 1}) {
+        s.sideBearing[side] = f.sideBearing[side];
+        s.wheel[side] = f.wheel[side];
+        s.wheelLift[side] = f.wheelLift[side];
+        s.wheelOffset[side] = f.wheelOffset[side];
+        s.wheelLateral[side] = f.wheelLateral[side];
+    }
+    // The car body's accelerations, as calcStateDerivative forms them.
+    s.verticalAccel = f.generalized[3 * CarBody + 2] / mass_[CarBody];
+    s.lateralAccel = f.generalized[3 * CarBody + 1] / mass_[CarBody];
+    s.energyStored = calcStoredEnergy(t, y);
+    s.energyInput = energyIntegrals ? energyIntegrals[0] : std::numeric_limits<double>::quiet_NaN();
+    s.energyDissipated = energyIntegrals ? energyIntegrals[1] : std::numeric_limits<double>::quiet_NaN();
+    return s;
 }
 
 void EomHalfCarModel::calcChannels(double t, const State& y, std::vector<double>& out,
                                    const double* energyIntegrals) const {
-    const Forces f = calcForces(t, y);
-    const RailState rail = rails_(t);
-    const double lb = units::lbf, in = units::inch, deg = units::degree;
-    out.clear();
-    out.push_back(y[3 * CarBody] / deg);
-    out.push_back((y[3 * CarBody + 2] - staticCarBodyZ_) / in);
-    out.push_back(y[3 * CarBody + 1] / in);
-    out.push_back((rail.z[1] - rail.z[0]) / in);
-    out.push_back((f.rim[0] + f.rim[1]) / lb);
-    for (int side : {0, 1}) out.push_back(f.sideBearing[side] / lb);
-    for (int side : {0, 1}) {
-        const BristleFrictionState& v = f.wedge[2 * side + kWedgeVertical];
-        const BristleFrictionState& h = f.wedge[2 * side + kWedgeLateral];
-        out.push_back(f.spring[side] / lb);
-        out.push_back(f.lateralSpring[side] / lb);
-        out.push_back(v.force / lb);
-        out.push_back(v.slipping ? 1 : 0);
-        out.push_back(h.force / lb);
-        out.push_back(h.slipping ? 1 : 0);
-    }
-    out.push_back(y[3 * Bolster] / deg);
-    out.push_back(y[3 * Bolster + 1] / in);
-    for (int side : {0, 1}) out.push_back(f.wheel[side] / lb);
-    for (int side : {0, 1}) out.push_back(f.wheelLift[side] / in);
-    out.push_back((f.wheelOffset[0] + f.wheelOffset[1]) / 2 / in);
-    out.push_back(calcStoredEnergy(t, y));
-    for (int i = 0; i < kNumEnergyIntegrals; ++i)
-        out.push_back(energyIntegrals ? energyIntegrals[i] : std::numeric_limits<double>::quiet_NaN());
+    channels_.evaluate(calcSample(t, y, energyIntegrals), out);
 }
 
 std::vector<std::string> EomHalfCarModel::getStateNames() const {

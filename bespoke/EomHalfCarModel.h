@@ -97,7 +97,16 @@ public:
     static constexpr int kNumEnergyIntegrals = 2;
     void calcEnergyRates(double t, const State& y, double* rates) const;
 
-    const ChannelLayout& getChannels() const { return channels_; }
+    /// What one output time records: the half car's common values, this model's forces and state.
+    struct Sample : HalfCarSample {
+        Forces forces;
+        State y;
+    };
+    const ChannelLayout& getChannels() const { return channels_.getLayout(); }
+    /// energyIntegrals: as calcChannels.
+    Sample calcSample(double t, const State& y, const double* energyIntegrals = nullptr) const;
+    /// Static load of each wheel of the equivalent wheelset (two real wheels) [N].
+    double calcStaticWheelLoad() const;
     /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J] (the
     /// integrals of calcEnergyRates, StiffIntegrator::getQuadrature()); NaN when null.
     void calcChannels(double t, const State& y, std::vector<double>& out,
@@ -148,7 +157,7 @@ private:
     Laws laws_;
     std::array<double, 3> mass_{}, inertia_{};
     double staticCarBodyZ_ = 0;
-    ChannelLayout channels_;
+    ChannelTable<Sample> channels_;
 };
 
 /// Rail input of the half car's equivalent wheelset from the track: the mean of

@@ -84,19 +84,54 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
 }
 
 void ReducedHalfCarModel::declareChannels() {
-    ChannelLayout& c = channels_;
+    ChannelTable<Sample>& c = channels_;
+    const double lb = units::lbf, deg = units::degree;
     declareHalfCarBodyChannels(c);
     for (int side : {0, 1}) {
-        c.add(fmt::format("spring_F_{}_lb", kSideName[side]));
-        c.add(fmt::format("wedge_vertical_F_{}_lb", kSideName[side]));
+        c.add(fmt::format("spring_F_{}", kSideName[side]), "lb", [=](const Sample& s) { return s.truck.spring[side] / lb; });
+        c.add(fmt::format("wedge_vertical_F_{}", kSideName[side]), "lb",
+              [=](const Sample& s) { return s.truck.friction[side] / lb; });
     }
-    c.add("center_pin_F_lb");
-    c.add("bolster_roll_F_deg");
-    c.add("wheelset_roll_F_deg");
+    c.add("center_pin_F", "lb", [=](const Sample& s) { return s.truck.pinForce / lb; });
+    c.add("bolster_roll_F", "deg", [=](const Sample& s) { return s.truck.rollBolster / deg; });
+    c.add("wheelset_roll_F", "deg", [=](const Sample& s) { return s.truck.rollWheelset / deg; });
     declareEquivalentWheelsetChannels(c, false);
-    c.add("truck_support_mode");  // 0 two-point … 7 no contact (TruckEquilibrium.h)
-    c.add("truck_mode_consistent");
+    // 0 two-point … 7 no contact (TruckEquilibrium.h)
+    c.add("truck_support_mode", "", [](const Sample& s) { return double(int(s.truck.mode.support)); });
+    c.add("truck_mode_consistent", "", [](const Sample& s) { return s.truck.consistent ? 1.0 : 0.0; });
     declareEnergyChannels(c);
+    // The massless truck's wheelset is held laterally by construction: no lateral wheel forces, no L/V.
+    declareHalfCarFreightChannels(c, calcStaticWheelLoad(), false);
+}
+
+double ReducedHalfCarModel::calcStaticWheelLoad() const {
+    const TruckMemory memory = makeStaticMemory();
+    TruckInputs in = makeTruckInputs(0, makeStaticState(), memory);
+    in.railZ = {0, 0};
+    return findTruckEquilibrium(in, memory.mode, *modeCache_).wheel[0];
+}
+
+ReducedHalfCarModel::Sample ReducedHalfCarModel::calcSample(double t, const State& y, const Evaluation& e,
+                                                            const double* energyIntegrals) const {
+    Sample s;
+    s.truck = e.truck;
+    const RailState rail = rails_(t);
+    s.roll = y[0];
+    s.verticalFromStatic = y[2] - staticZ_;
+    s.lateral = y[1];
+    s.crossLevel = rail.z[1] - rail.z[0];
+    s.centerPlate = e.truck.rim[0] + e.truck.rim[1];
+    for (int side : {0, 1}) {
+        s.sideBearing[side] = e.truck.sideBearing[side];
+        s.wheel[side] = e.truck.wheel[side];
+        s.wheelLift[side] = e.truck.wheelLift[side];
+    }
+    s.verticalAccel = e.derivative[5];
+    s.lateralAccel = e.derivative[4];
+    s.energyStored = calcStoredEnergy(y, e.truck);
+    s.energyInput = energyIntegrals ? energyIntegrals[0] : std::numeric_limits<double>::quiet_NaN();
+    s.energyDissipated = energyIntegrals ? energyIntegrals[1] : std::numeric_limits<double>::quiet_NaN();
+    return s;
 }
 
 double ReducedHalfCarModel::calcStoredEnergy(const State& y, const TruckSolution& s) const {
@@ -120,24 +155,7 @@ double ReducedHalfCarModel::calcSliderDissipation(const TruckMemory& before, con
 
 void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
                                        const double* energyIntegrals) const {
-    const double lb = units::lbf, in = units::inch, deg = units::degree;
-    const RailState rail = rails_(t);
-    const TruckSolution& s = e.truck;
-    out = {y[0] / deg, (y[2] - staticZ_) / in, y[1] / in, (rail.z[1] - rail.z[0]) / in, (s.rim[0] + s.rim[1]) / lb,
-           s.sideBearing[0] / lb, s.sideBearing[1] / lb};
-    for (int side : {0, 1}) {
-        out.push_back(s.spring[side] / lb);
-        out.push_back(s.friction[side] / lb);
-    }
-    out.push_back(s.pinForce / lb);
-    out.push_back(s.rollBolster / deg);
-    out.push_back(s.rollWheelset / deg);
-    for (int side : {0, 1}) out.push_back(s.wheel[side] / lb);
-    for (int side : {0, 1}) out.push_back(s.wheelLift[side] / in);
-    out.push_back(double(int(s.mode.support)));
-    out.push_back(s.consistent ? 1 : 0);
-    out.push_back(calcStoredEnergy(y, s));
-    for (int i : {0, 1}) out.push_back(energyIntegrals ? energyIntegrals[i] : std::numeric_limits<double>::quiet_NaN());
+    channels_.evaluate(calcSample(t, y, e, energyIntegrals), out);
 }
 
 namespace {

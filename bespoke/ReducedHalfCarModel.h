@@ -64,7 +64,15 @@ public:
     std::vector<double> calcStaticFlatState() const;
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
 
-    const ChannelLayout& getChannels() const { return channels_; }
+    /// What one output time records: the half car's common values and this model's truck.
+    struct Sample : HalfCarSample {
+        TruckSolution truck;
+    };
+    const ChannelLayout& getChannels() const { return channels_.getLayout(); }
+    Sample calcSample(double t, const State& y, const Evaluation& e, const double* energyIntegrals = nullptr) const;
+    /// Static load of each wheel of the equivalent wheelset [N]: the truck's
+    /// equilibrium at the static state on level rails.
+    double calcStaticWheelLoad() const;
     /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J]; NaN when null.
     void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
                       const double* energyIntegrals = nullptr) const;
@@ -86,7 +94,7 @@ private:
     TruckGeometry truck_;
     std::shared_ptr<const TruckModeCache> modeCache_;  // per-mode factorizations (shared by copies)
     double mass_ = 0, inertia_ = 0, staticZ_ = 0;
-    ChannelLayout channels_;
+    ChannelTable<Sample> channels_;
 };
 
 struct ReducedRunStatistics {

@@ -112,30 +112,51 @@ State RockingModel::makeStaticState(bool requireLevelRails) const {
 }
 
 void RockingModel::declareChannels() {
-    channels_.roll = channels_.add("roll_deg");
-    channels_.add("pitch_deg");
-    channels_.add("yaw_deg");
-    channels_.add("car_body_vertical_in");
-    channels_.add("car_body_lateral_in");
-    for (const auto& truck : trucks_) truck->declareChannels(channels_);
-    declareEnergyChannels(channels_);
+    ChannelTable<CarSample>& c = channels_;
+    const double in = units::inch, deg = units::degree;
+    c.add("roll", "deg", ChannelRole::Roll, [=](const CarSample& s) { return s.angles[0] / deg; });
+    c.add("pitch", "deg", [=](const CarSample& s) { return s.angles[1] / deg; });
+    c.add("yaw", "deg", [=](const CarSample& s) { return s.angles[2] / deg; });
+    c.add("car_body_vertical", "in", [=](const CarSample& s) { return s.verticalFromStatic / in; });
+    c.add("car_body_lateral", "in", [=](const CarSample& s) { return s.position[1] / in; });
+    for (size_t i = 0; i < trucks_.size(); ++i) trucks_[i]->declareChannels(c, int(i));
+    declareEnergyChannels(c);
+    // Freight channels, after the energy audit's so that the columns above keep their places.
+    for (size_t i = 0; i < trucks_.size(); ++i) trucks_[i]->declareFreightChannels(c, int(i));
+    c.add("car_body_vertical_accel", "g", ChannelRole::CarBodyVerticalAccel,
+          [](const CarSample& s) { return s.cgAcceleration[2] / units::g; });
+    c.add("car_body_lateral_accel", "g", ChannelRole::CarBodyLateralAccel,
+          [](const CarSample& s) { return s.cgAcceleration[1] / units::g; });
+    // Over each truck, when the car has more than one (the half car's one truck is under the CG).
+    for (size_t i = 0; i < trucks_.size() && trucks_.size() > 1; ++i) {
+        const std::string& T = trucks_[i]->getLabel();
+        c.add("car_body_vertical_accel_" + T, "g", ChannelRole::CarBodyVerticalAccel,
+              [i](const CarSample& s) { return s.trucks[i].carBodyAcceleration[2] / units::g; });
+        c.add("car_body_lateral_accel_" + T, "g", ChannelRole::CarBodyLateralAccel,
+              [i](const CarSample& s) { return s.trucks[i].carBodyAcceleration[1] / units::g; });
+    }
+}
+
+CarSample RockingModel::calcSample(const State& s) const {
+    system_.realize(s, Stage::Acceleration);
+    CarSample c;
+    c.angles = carBody_.getBodyRotation(s).convertRotationToBodyFixedXYZ();
+    c.position = carBody_.getBodyOriginLocation(s);
+    c.verticalFromStatic = c.position[2] - staticCarBodyHeight_;
+    c.cgAcceleration = carBody_.getBodyOriginAcceleration(s);
+    for (const auto& truck : trucks_) {
+        c.trucks.push_back(truck->calcSample(s));
+        c.trucks.back().carBodyAcceleration = carBody_.findStationAccelerationInGround(s, Vec3(truck->getX(), 0, 0));
+    }
+    const EnergyAccounts a = getEnergyAccounts(s);
+    c.energyStored = calcMechanicalEnergy(s);
+    c.energyInput = a.input;
+    c.energyDissipated = a.dissipated;
+    return c;
 }
 
 void RockingModel::calcChannels(const State& s, std::vector<double>& out) const {
-    out.resize(channels_.names.size());
-    const Vec3 angles = carBody_.getBodyRotation(s).convertRotationToBodyFixedXYZ();
-    const Vec3 p = carBody_.getBodyOriginLocation(s);
-    double* o = out.data();
-    *o++ = angles[0] / units::degree;
-    *o++ = angles[1] / units::degree;
-    *o++ = angles[2] / units::degree;
-    *o++ = (p[2] - staticCarBodyHeight_) / units::inch;
-    *o++ = p[1] / units::inch;
-    for (const auto& truck : trucks_) o = truck->calcChannels(s, o);
-    const EnergyAccounts a = getEnergyAccounts(s);
-    *o++ = calcMechanicalEnergy(s);
-    *o++ = a.input;
-    *o++ = a.dissipated;
+    channels_.evaluate(calcSample(s), out);
 }
 
 RockingModel::EnergyAccounts RockingModel::getEnergyAccounts(const State& s) const { return energyMeter_->get(s); }

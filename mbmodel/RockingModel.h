@@ -61,7 +61,9 @@ public:
     /// a run from rest needs; a run continuing a sweep only uses the geometry.
     SimTK::State makeStaticState(bool requireLevelRails = true) const;
 
-    const ChannelLayout& getChannels() const { return channels_; }
+    const ChannelLayout& getChannels() const { return channels_.getLayout(); }
+    /// Every recorded value at `s` (realizes it to Acceleration: the car-body accelerations).
+    CarSample calcSample(const SimTK::State& s) const;
     /// One sample of every channel (no time column).
     void calcChannels(const SimTK::State& s, std::vector<double>& out) const;
 
@@ -100,7 +102,7 @@ protected:
     SimTK::GeneralForceSubsystem forces_;
     SimTK::MobilizedBody carBody_;
     std::vector<std::unique_ptr<Truck>> trucks_;
-    ChannelLayout channels_;
+    ChannelTable<CarSample> channels_;
     double staticCarBodyHeight_ = 0;  // z of the CG at rest [m]
     class EnergyMeter;
     const EnergyMeter* energyMeter_ = nullptr;  // owned by the force subsystem

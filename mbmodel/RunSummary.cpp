@@ -34,6 +34,20 @@ Extremes maxOverChannels(const TimeHistory& h, const std::vector<int>& channels,
     }
     return e;
 }
+
+/// Largest absolute value over the channels, filtered and raw; NaN for no channel.
+Extremes maxAbsOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f) {
+    if (channels.empty())
+        return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    Extremes e{0, 0};
+    for (int c : channels) {
+        const auto x = getColumn(h, c);
+        const auto y = f.apply(x);
+        e.rawMax = std::max({e.rawMax, maxOf(x), -minOf(x)});
+        e.filteredMax = std::max({e.filteredMax, maxOf(y), -minOf(y)});
+    }
+    return e;
+}
 }  // namespace
 
 Durations calcDurations(const std::vector<bool>& on, double dt) {
@@ -115,6 +129,37 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
         r.wheelLiftLongestS = std::max(r.wheelLiftLongestS, calcDurations(lifted, dt).longest);
     }
     r.energyBalanceError = calcEnergyBalanceError(h, layout);
+
+    if (layout.wheelUnloading.empty()) {
+        r.maxWheelUnloading = r.rawMaxWheelUnloading = std::numeric_limits<double>::quiet_NaN();
+    } else {
+        const Extremes unloading = maxOverChannels(h, layout.wheelUnloading, filter);
+        // A load cannot be negative, so unloading cannot exceed 1; the filter's overshoot can.
+        r.maxWheelUnloading = std::min(1.0, unloading.filteredMax);
+        r.rawMaxWheelUnloading = unloading.rawMax;
+    }
+    const Extremes lv = maxAbsOverChannels(h, layout.lOverV, filter);
+    r.maxLOverV = lv.filteredMax;
+    r.rawMaxLOverV = lv.rawMax;
+    const Extremes av = maxAbsOverChannels(h, layout.carBodyVerticalAccel, filter);
+    r.maxCarBodyVerticalAccelG = av.filteredMax;
+    r.rawMaxCarBodyVerticalAccelG = av.rawMax;
+    const Extremes al = maxAbsOverChannels(h, layout.carBodyLateralAccel, filter);
+    r.maxCarBodyLateralAccelG = al.filteredMax;
+    r.rawMaxCarBodyLateralAccelG = al.rawMax;
+    for (int c : layout.centerPlate) {
+        TruckLoads t;
+        t.truck = layout.channels[c].truck;
+        const auto x = filter.apply(getColumn(h, c));
+        t.maxCenterPlateLoadLb = maxOf(x);
+        t.minCenterPlateLoadLb = std::max(0.0, minOf(x));  // a contact load cannot be negative; the filter's undershoot can
+        int side = 0;  // each truck declares its left side bearing, then its right
+        for (int b : layout.sideBearing)
+            if (layout.channels[b].truck == t.truck && side < 2)
+                t.maxSideBearingLoadLb[side++] = maxOf(filter.apply(getColumn(h, b)));
+        r.trucks.push_back(t);
+    }
+    r.criteria = evaluateCriteria(r, opt.criteria);
     r.regime = classifyRegime(r.centerPlateSeparationLongestS, sideBearingContact, opt.severeSeparationTime);
     if (run.stop) {
         r.regime = run.stop->regime;
@@ -127,6 +172,30 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.steps = run.steps;
     r.realizations = run.realizations;
     return r;
+}
+
+std::vector<Criterion> evaluateCriteria(const RunSummary& s, const CriteriaLimits& l) {
+    return {{"roll_peak_to_peak", "deg", s.peakToPeakRollDeg, l.rollPeakToPeakDeg},
+            {"wheel_unloading", "ratio", s.maxWheelUnloading, l.wheelUnloading},
+            {"l_over_v", "ratio", s.maxLOverV, l.lOverV},
+            {"car_body_vertical_accel", "g", s.maxCarBodyVerticalAccelG, l.carBodyVerticalAccelG},
+            {"car_body_lateral_accel", "g", s.maxCarBodyLateralAccelG, l.carBodyLateralAccelG}};
+}
+
+bool RunSummary::passesCriteria() const {
+    for (const Criterion& c : criteria)
+        if (c.evaluated() && !c.passes()) return false;
+    return true;
+}
+
+std::string RunSummary::describeCriteria() const {
+    std::string failed, unevaluated;
+    for (const Criterion& c : criteria) {
+        if (!c.evaluated()) unevaluated += (unevaluated.empty() ? "" : ",") + c.name;
+        else if (!c.passes()) failed += (failed.empty() ? "" : ",") + c.name;
+    }
+    return (failed.empty() ? "pass" : "FAIL " + failed) +
+           (unevaluated.empty() ? "" : " (not evaluated: " + unevaluated + ")");
 }
 
 }  // namespace rockroll

@@ -9,6 +9,37 @@
 
 namespace rockroll {
 
+/// Limits of the freight acceptance criteria (scenario table [criteria]). The
+/// defaults are the brief's twist-and-roll limits (peak-to-peak roll 6°, no
+/// wheel below 10 % of its static load) and assumed values for L/V and the
+/// car-body accelerations (docs/model.md "Criteria"): set them from the standard
+/// the car is accepted under.
+struct CriteriaLimits {
+    double rollPeakToPeakDeg = 6;         ///< car-body roll, max − min [deg]
+    double wheelUnloading = 0.9;          ///< largest (static − load)/static of any wheel
+    double lOverV = 1.0;                  ///< largest |L/V| of any wheel
+    double carBodyVerticalAccelG = 0.9;   ///< largest |vertical acceleration| [g]
+    double carBodyLateralAccelG = 0.75;   ///< largest |lateral acceleration| [g]
+};
+
+/// One criterion of a run: value ≤ limit passes. A criterion the model cannot
+/// evaluate (L/V without lateral wheel forces) has no value and no verdict.
+struct Criterion {
+    std::string name;       ///< roll_peak_to_peak, wheel_unloading, l_over_v, car_body_vertical_accel, car_body_lateral_accel
+    std::string unit;       ///< deg, ratio, g
+    double value = 0;       ///< NaN: not evaluated by this model
+    double limit = 0;
+    bool evaluated() const { return value == value; }
+    bool passes() const { return evaluated() && value <= limit; }
+};
+
+/// One truck's loads over a run (20 Hz filtered as the headline maxima) [lb].
+struct TruckLoads {
+    std::string truck;                    ///< "F" (leading) or "R"
+    double maxCenterPlateLoadLb = 0, minCenterPlateLoadLb = 0;
+    double maxSideBearingLoadLb[2] = {0, 0};  ///< left, right
+};
+
 struct RunSummary {
     std::string model, car;
     double speedMph = 0, amplitudeIn = 0, durationS = 0;
@@ -30,6 +61,19 @@ struct RunSummary {
     double stoppedAtS = -1;              ///< < 0: ran to the end; else when a run limit stopped it [s]
     std::string stopReason;              ///< what stopped it, with values and limit
     double energyBalanceError = std::numeric_limits<double>::quiet_NaN();  ///< |W − ΔE − D| / max(|W|, D); NaN: not audited
+    // Freight channels: filtered (headline) and raw peaks of the absolute values.
+    // NaN: the model has no such channel (L/V without lateral wheel forces).
+    double maxWheelUnloading = 0, rawMaxWheelUnloading = 0;  ///< (static − load)/static, filtered ≤ 1
+    double maxLOverV = std::numeric_limits<double>::quiet_NaN(), rawMaxLOverV = std::numeric_limits<double>::quiet_NaN();
+    double maxCarBodyVerticalAccelG = 0, rawMaxCarBodyVerticalAccelG = 0;
+    double maxCarBodyLateralAccelG = 0, rawMaxCarBodyLateralAccelG = 0;
+    std::vector<TruckLoads> trucks;
+    std::vector<Criterion> criteria;
+    /// Every evaluated criterion passes.
+    bool passesCriteria() const;
+    /// "pass", or "FAIL " and the failing criteria's names, then any criterion not
+    /// evaluated, e.g. "pass (not evaluated: l_over_v)" (for tables).
+    std::string describeCriteria() const;
     std::string filter;
     double simTimeS = 0, wallTimeS = 0;
     long steps = 0;
@@ -44,7 +88,11 @@ struct SummaryOptions {
     /// break (a shorter bounce is not a rock-off) [s].
     double severeSeparationTime = 0.010;
     std::vector<double> staticReference;  ///< history row of the static state; empty: the run's first sample
+    CriteriaLimits criteria;
 };
+
+/// The criteria list of a summary's values against `limits`, in a fixed order.
+std::vector<Criterion> evaluateCriteria(const RunSummary& s, const CriteriaLimits& limits);
 
 /// Longest unbroken stretch and total time with `on[i]` true, on samples spaced
 /// `dt` apart: each sample stands for dt, so one sample counts dt.

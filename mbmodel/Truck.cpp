@@ -168,79 +168,98 @@ TruckPowers Truck::calcPowers(const State& s) const {
     return p;
 }
 
-void Truck::declareChannels(ChannelLayout& c) const {
+void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
     const std::string& T = spec_.label;
-    c.add(fmt::format("cross_level_{}_in", T));
-    c.centerPlate.push_back(c.add(fmt::format("center_plate_{}_lb", T)));
+    const double lb = units::lbf, in = units::inch;
+    using R = ChannelRole;
+    auto truck = [index](const CarSample& s) -> const TruckSample& { return s.trucks[index]; };
+    c.add(fmt::format("cross_level_{}", T), "in", [=](const CarSample& s) { return truck(s).crossLevel / in; });
+    c.add({fmt::format("center_plate_{}", T), "lb", R::CenterPlate, T},
+          [=](const CarSample& s) { return truck(s).centerPlate / lb; });
     for (int side : {kLeft, kRight})
-        c.sideBearing.push_back(c.add(fmt::format("side_bearing_{}_{}_lb", T, kSideName[side])));
+        c.add({fmt::format("side_bearing_{}_{}", T, kSideName[side]), "lb", R::SideBearing, T},
+              [=](const CarSample& s) { return truck(s).sideBearing[side] / lb; });
     for (int side : {kLeft, kRight}) {
         const char* S = kSideName[side];
-        c.add(fmt::format("spring_{}_{}_lb", T, S));
-        c.add(fmt::format("lateral_spring_{}_{}_lb", T, S));
-        c.add(fmt::format("wedge_vertical_{}_{}_lb", T, S));
-        c.add(fmt::format("wedge_vertical_slip_{}_{}", T, S));
-        c.add(fmt::format("wedge_lateral_{}_{}_lb", T, S));
-        c.add(fmt::format("wedge_lateral_slip_{}_{}", T, S));
+        c.add(fmt::format("spring_{}_{}", T, S), "lb", [=](const CarSample& s) { return truck(s).spring[side] / lb; });
+        c.add(fmt::format("lateral_spring_{}_{}", T, S), "lb",
+              [=](const CarSample& s) { return truck(s).lateralSpring[side] / lb; });
+        c.add(fmt::format("wedge_vertical_{}_{}", T, S), "lb",
+              [=](const CarSample& s) { return truck(s).wedgeVertical[side].force / lb; });
+        c.add(fmt::format("wedge_vertical_slip_{}_{}", T, S), "",
+              [=](const CarSample& s) { return truck(s).wedgeVertical[side].slipping ? 1.0 : 0.0; });
+        c.add(fmt::format("wedge_lateral_{}_{}", T, S), "lb",
+              [=](const CarSample& s) { return truck(s).wedgeLateral[side].force / lb; });
+        c.add(fmt::format("wedge_lateral_slip_{}_{}", T, S), "",
+              [=](const CarSample& s) { return truck(s).wedgeLateral[side].slipping ? 1.0 : 0.0; });
     }
-    c.add(fmt::format("bolster_roll_{}_deg", T));
-    c.add(fmt::format("bolster_lateral_{}_in", T));
-    for (int side : {kLeft, kRight}) {
-        const int idx = c.add(fmt::format("wheels_{}_{}_lb", T, kSideName[side]));
-        c.truckSideWheelLoad.push_back(idx);
-        if (wheelsets_.size() == 1) c.singleWheelLoad.push_back(idx);
-    }
+    c.add(fmt::format("bolster_roll_{}", T), "deg",
+          [=](const CarSample& s) { return truck(s).bolsterRoll / units::degree; });
+    c.add(fmt::format("bolster_lateral_{}", T), "in", [=](const CarSample& s) { return truck(s).bolsterLateral / in; });
+    const bool lumped = wheelsets_.size() == 1;  // one (equivalent) wheelset: its wheels are the truck side's
+    for (int side : {kLeft, kRight})
+        c.add(fmt::format("wheels_{}_{}", T, kSideName[side]), "lb",
+              lumped ? R::TruckSideWheelLoad | R::SingleWheelLoad : R::TruckSideWheelLoad, [=](const CarSample& s) {
+                  double sum = 0;
+                  for (const auto& w : truck(s).wheels) sum += w.normal[side];
+                  return sum / lb;
+              });
+    std::vector<ChannelLayout::Wheelset> wheelsets(wheelsets_.size());
     for (size_t i = 0; i < wheelsets_.size(); ++i)
         for (int side : {kLeft, kRight}) {
-            if (wheelsets_.size() > 1)
-                c.singleWheelLoad.push_back(c.add(fmt::format("wheel_{}{}_{}_lb", T, i + 1, kSideName[side])));
-            c.wheelLift.push_back(c.add(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[side])));
+            if (!lumped)
+                c.add(fmt::format("wheel_{}{}_{}", T, i + 1, kSideName[side]), "lb", R::SingleWheelLoad,
+                      [=](const CarSample& s) { return truck(s).wheels[i].normal[side] / lb; });
+            const int lift = c.add(fmt::format("wheel_lift_{}{}_{}", T, i + 1, kSideName[side]), "in", R::WheelLift,
+                                   [=](const CarSample& s) { return truck(s).wheels[i].lift[side] / in; });
+            (side == kLeft ? wheelsets[i].liftLeft : wheelsets[i].liftRight) = lift;
         }
     for (size_t i = 0; i < wheelsets_.size(); ++i) {
-        ChannelLayout::Wheelset w;
-        w.liftLeft = c.find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kLeft]));
-        w.liftRight = c.find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kRight]));
-        w.lateral = c.add(fmt::format("wheelset_lateral_{}{}_in", T, i + 1));
-        c.wheelsets.push_back(w);
+        wheelsets[i].lateral = c.add(fmt::format("wheelset_lateral_{}{}", T, i + 1), "in", R::WheelsetLateral,
+                                     [=](const CarSample& s) {
+                                         const auto& w = truck(s).wheels[i];
+                                         return (w.offset[0] + w.offset[1]) / 2 / in;
+                                     });
+        c.addWheelset(wheelsets[i]);
     }
 }
 
-double* Truck::calcChannels(const State& s, double* out) const {
-    const double lb = units::lbf, in = units::inch;
-    double cross = 0;
-    std::vector<WheelRailForces> wheel;
-    for (const auto* wr : wheelRail_) {
-        wheel.push_back(wr->calcForces(s));
-        const RailHeights r = wr->getRailHeights(s.getTime());
-        cross += (r.z[kRight] - r.z[kLeft]) / double(wheelRail_.size());
-    }
-    *out++ = cross / in;
-    *out++ = centerPlate_->calcForces(s).vertical / lb;
-    for (int side : {kLeft, kRight}) *out++ = sideBearing_[side]->calcForce(s) / lb;
-    for (int side : {kLeft, kRight}) {
-        *out++ = verticalSpring_[side]->calcForce(s) / lb;
-        *out++ = lateralSpring_[side]->calcForce(s) / lb;
-        const BristleFrictionState v = wedge_[side]->calcFriction(s, FrictionWedge::Vertical);
-        const BristleFrictionState h = wedge_[side]->calcFriction(s, FrictionWedge::Lateral);
-        *out++ = v.force / lb;
-        *out++ = v.slipping ? 1 : 0;
-        *out++ = h.force / lb;
-        *out++ = h.slipping ? 1 : 0;
-    }
-    *out++ = bolster_.getOneQ(s, 0) / units::degree;
-    *out++ = bolster_.getOneQ(s, 1) / in;
-    for (int side : {kLeft, kRight}) {
-        double sum = 0;
-        for (const auto& w : wheel) sum += w.normal[side];
-        *out++ = sum / lb;
-    }
-    for (size_t i = 0; i < wheel.size(); ++i)
+void Truck::declareFreightChannels(ChannelTable<CarSample>& c, int index) const {
+    const std::string& T = spec_.label;
+    auto truck = [index](const CarSample& s) -> const TruckSample& { return s.trucks[index]; };
+    for (size_t i = 0; i < wheelsets_.size(); ++i)
         for (int side : {kLeft, kRight}) {
-            if (wheel.size() > 1) *out++ = wheel[i].normal[side] / lb;
-            *out++ = wheel[i].lift[side] / in;
+            const double staticLoad = calcStaticWheelLoad(int(i));
+            c.add(fmt::format("wheel_unloading_{}{}_{}", T, i + 1, kSideName[side]), "ratio",
+                  ChannelRole::WheelUnloading, [=](const CarSample& s) {
+                      return calcWheelUnloading(truck(s).wheels[i].normal[side], staticLoad);
+                  });
+            c.add(fmt::format("l_over_v_{}{}_{}", T, i + 1, kSideName[side]), "ratio", ChannelRole::LOverV,
+                  [=](const CarSample& s) {
+                      const WheelRailForces& w = truck(s).wheels[i];
+                      return calcLOverV(w.lateral[side], w.normal[side]);
+                  });
         }
-    for (const auto& w : wheel) *out++ = (w.offset[0] + w.offset[1]) / 2 / in;
-    return out;
+}
+
+TruckSample Truck::calcSample(const State& s) const {
+    TruckSample t;
+    for (const auto* wr : wheelRail_) {
+        t.wheels.push_back(wr->calcForces(s));
+        const RailHeights r = wr->getRailHeights(s.getTime());
+        t.crossLevel += (r.z[kRight] - r.z[kLeft]) / double(wheelRail_.size());
+    }
+    t.centerPlate = centerPlate_->calcForces(s).vertical;
+    for (int side : {kLeft, kRight}) {
+        t.sideBearing[side] = sideBearing_[side]->calcForce(s);
+        t.spring[side] = verticalSpring_[side]->calcForce(s);
+        t.lateralSpring[side] = lateralSpring_[side]->calcForce(s);
+        t.wedgeVertical[side] = wedge_[side]->calcFriction(s, FrictionWedge::Vertical);
+        t.wedgeLateral[side] = wedge_[side]->calcFriction(s, FrictionWedge::Lateral);
+    }
+    t.bolsterRoll = bolster_.getOneQ(s, 0);
+    t.bolsterLateral = bolster_.getOneQ(s, 1);
+    return t;
 }
 
 }  // namespace rockroll

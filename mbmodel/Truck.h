@@ -13,6 +13,7 @@
 #include "mbmodel/ChannelLayout.h"
 
 #include <Simbody.h>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,28 @@ struct TruckSpec {
     double wheelsetMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
 };
 
+/// One truck's element forces and kinematics at one output time (Truck::calcSample), SI.
+struct TruckSample {
+    double crossLevel = 0;                         ///< mean over its wheelsets, right − left [m]
+    double centerPlate = 0;                        ///< vertical [N]
+    std::array<double, 2> sideBearing{0, 0}, spring{0, 0}, lateralSpring{0, 0};  ///< left, right [N]
+    std::array<BristleFrictionState, 2> wedgeVertical{}, wedgeLateral{};
+    double bolsterRoll = 0, bolsterLateral = 0;    ///< [rad], [m]
+    std::vector<WheelRailForces> wheels;           ///< one per wheelset body
+    SimTK::Vec3 carBodyAcceleration{0};            ///< car-body point over the truck at CG height, ground axes [m/s²]
+};
+
+/// Everything a Simbody rocking model records at one output time (its channels'
+/// evaluators read only this; RockingModel::calcSample fills it once per sample).
+struct CarSample {
+    SimTK::Vec3 angles{0};          ///< body-fixed XYZ roll, pitch, yaw [rad]
+    SimTK::Vec3 position{0};        ///< car-body CG [m]
+    double verticalFromStatic = 0;  ///< CG height above its static height [m]
+    SimTK::Vec3 cgAcceleration{0};  ///< car-body CG, ground axes [m/s²]
+    std::vector<TruckSample> trucks;
+    double energyStored = 0, energyInput = 0, energyDissipated = 0;  ///< [J]
+};
+
 /// Energy-audit powers of one truck's elements [W] (state realized to Velocity).
 struct TruckPowers {
     double railInput = 0;        ///< work rate of the rails on the wheels
@@ -55,9 +78,16 @@ public:
 
     TruckPowers calcPowers(const SimTK::State& s) const;
 
-    void declareChannels(ChannelLayout& layout) const;
-    /// Writes this truck's channels, in declareChannels order, starting at out.
-    double* calcChannels(const SimTK::State& s, double* out) const;
+    /// Declares this truck's channels; `index` is the truck's place in CarSample::trucks.
+    void declareChannels(ChannelTable<CarSample>& table, int index) const;
+    /// Declares its freight channels: each wheel's unloading ratio and L/V.
+    void declareFreightChannels(ChannelTable<CarSample>& table, int index) const;
+    /// This truck's forces (state realized to Velocity); carBodyAcceleration is left 0.
+    TruckSample calcSample(const SimTK::State& s) const;
+    const std::string& getLabel() const { return spec_.label; }
+    double getX() const { return spec_.x; }
+    /// Static load of each wheel of wheelset body i [N] (both wheels of a lumped body).
+    double calcStaticWheelLoad(int wheelset) const;
 
     const SimTK::MobilizedBody& getBolster() const { return bolster_; }
     const SimTK::MobilizedBody& getWheelset(int i) const { return wheelsets_[i]; }
@@ -73,7 +103,6 @@ private:
     void addElements(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& carBody,
                      const SimTK::Vec3& p_CarBodyPlate);
     SuspensionLink makeSuspensionLink(double sideSign) const;
-    double calcStaticWheelLoad(int wheelset) const;  ///< per wheel of that body [N]
 
     const CarParameters car_;
     const TruckSpec spec_;

@@ -500,6 +500,32 @@ void readAttribution(const toml::table& root, const std::string& src, Scenario& 
     attribution.rejectUnknown();
 }
 
+/// [criteria]: limits of the summary's freight criteria (mbmodel/RunSummary.h,
+/// CriteriaLimits); every key optional, each a positive finite limit.
+void readCriteria(const toml::table& root, const std::string& src, Scenario& sc) {
+    using units::Dimension;
+    TableReader table(getTable(root, "criteria", src, false), src, "criteria.");
+    CriteriaLimits& c = sc.criteria;
+    auto ranged = [&](const char* key, Dimension dim, double fallback, double hi, const std::string& expected) {
+        if (!table.has(key)) return fallback;
+        const double v = table.getQuantity(key, dim);
+        if (!std::isfinite(v) || v <= 0 || v > hi) table.fail(key, TableReader::describe(*table.require(key)), expected);
+        return v;
+    };
+    // Echoed in degrees without the conversion's round-off.
+    c.rollPeakToPeakDeg = std::round(ranged("roll_peak_to_peak", Dimension::Angle, c.rollPeakToPeakDeg * units::degree,
+                                            90 * units::degree, "an angle in (0, 90 deg]") /
+                                     units::degree * 1e9) / 1e9;
+    c.wheelUnloading = ranged("wheel_unloading", Dimension::Dimensionless, c.wheelUnloading, 1,
+                              "a plain number in (0, 1]: (static - load) / static");
+    c.lOverV = ranged("l_over_v", Dimension::Dimensionless, c.lOverV, 10, "a plain number in (0, 10]");
+    c.carBodyVerticalAccelG = ranged("car_body_vertical_accel_g", Dimension::Dimensionless, c.carBodyVerticalAccelG,
+                                     10, "a plain number of g in (0, 10]");
+    c.carBodyLateralAccelG = ranged("car_body_lateral_accel_g", Dimension::Dimensionless, c.carBodyLateralAccelG, 10,
+                                    "a plain number of g in (0, 10]");
+    table.rejectUnknown();
+}
+
 }  // namespace
 
 const std::vector<std::string>& getScenarioKeys() {
@@ -517,7 +543,9 @@ const std::vector<std::string>& getScenarioKeys() {
               "eom.elastic_contacts", "eom.equal_lateral_shares", "eom.small_angles", "limits.enabled",
               "limits.flange_height", "limits.flange_clearance", "limits.wheels_off_time", "limits.rollover_angle",
               "limits.energy_runaway_fraction", "limits.max_wall_time", "limits.severe_separation",
-              "reduced.truck_weight", "attribution.truck_gravity", "attribution.truck_mass_scale"})
+              "reduced.truck_weight", "attribution.truck_gravity", "attribution.truck_mass_scale",
+              "criteria.roll_peak_to_peak", "criteria.wheel_unloading", "criteria.l_over_v",
+              "criteria.car_body_vertical_accel_g", "criteria.car_body_lateral_accel_g"})
             k.push_back(key);
         return k;
     }();
@@ -614,8 +642,9 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     readLimits(root, source, sc);
     readReduced(root, source, sc);
     readAttribution(root, source, sc);
+    readCriteria(root, source, sc);
     for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown({"eom", "limits", "reduced", "attribution"});
+    top.rejectUnknown({"eom", "limits", "reduced", "attribution", "criteria"});
     return sc;
 }
 
@@ -756,6 +785,11 @@ std::string formatScenarioToml(const Scenario& sc) {
     if (l.wheelsOffTime > 0) limits.insert("wheels_off_time", formatSi(l.wheelsOffTime, Dimension::Time));
     if (l.rolloverAngle > 0) limits.insert("rollover_angle", formatSi(l.rolloverAngle, Dimension::Angle));
     root.insert("limits", std::move(limits));
+    root.insert("criteria", toml::table{{"roll_peak_to_peak", fmt::format("{} deg", sc.criteria.rollPeakToPeakDeg)},
+                                        {"wheel_unloading", sc.criteria.wheelUnloading},
+                                        {"l_over_v", sc.criteria.lOverV},
+                                        {"car_body_vertical_accel_g", sc.criteria.carBodyVerticalAccelG},
+                                        {"car_body_lateral_accel_g", sc.criteria.carBodyLateralAccelG}});
 
     std::ostringstream os;
     os << toml::toml_formatter(root, toml::format_flags::none);

@@ -7,6 +7,7 @@
 #include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/RockingModel.h"
+#include "mbmodel/RunSummary.h"
 #include "mbmodel/Simulation.h"
 #include "mbmodel/TrackInput.h"
 
@@ -35,6 +36,7 @@ struct Scenario {
     double severeSeparationTime = 0.010;  ///< [limits] severe_separation [s]
     ReducedOptions reduced;            ///< [reduced] table: the reduced model's truck weight
     AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
+    CriteriaLimits criteria;           ///< [criteria] table: limits of the summary's criteria
 };
 
 class ScenarioError : public std::runtime_error {

@@ -77,6 +77,7 @@ ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     opt.filterCutoffHz = sc.filterCutoffHz;
     opt.staticReference = start.staticReference;
     opt.severeSeparationTime = sc.severeSeparationTime;
+    opt.criteria = sc.criteria;
 
     const TrackMotion motion = makeTrackMotion(sc, start);
     const std::unique_ptr<TimeDomainModel> model = d.make(sc, motion);

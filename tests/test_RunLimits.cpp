@@ -17,21 +17,20 @@ namespace {
 struct Layout {
     ChannelLayout c;
     Layout() {
-        c.roll = c.add("roll_deg");
-        c.centerPlate.push_back(c.add("center_plate_F_lb"));
-        c.sideBearing.push_back(c.add("side_bearing_F_L_lb"));
-        const int wl = c.add("wheels_F_L_lb"), wr = c.add("wheels_F_R_lb");
-        c.truckSideWheelLoad = {wl, wr};
-        c.singleWheelLoad = {wl, wr};
+        using R = ChannelRole;
+        c.add({"roll", "deg", R::Roll, ""});
+        c.add({"center_plate_F", "lb", R::CenterPlate, ""});
+        c.add({"side_bearing_F_L", "lb", R::SideBearing, ""});
+        for (const char* side : {"L", "R"})
+            c.add({std::string("wheels_F_") + side, "lb", R::TruckSideWheelLoad | R::SingleWheelLoad, ""});
         ChannelLayout::Wheelset w;
-        w.liftLeft = c.add("wheel_lift_F1_L_in");
-        w.liftRight = c.add("wheel_lift_F1_R_in");
-        w.lateral = c.add("wheelset_lateral_F1_in");
-        c.wheelLift = {w.liftLeft, w.liftRight};
+        w.liftLeft = c.add({"wheel_lift_F1_L", "in", R::WheelLift, ""});
+        w.liftRight = c.add({"wheel_lift_F1_R", "in", R::WheelLift, ""});
+        w.lateral = c.add({"wheelset_lateral_F1", "in", R::WheelsetLateral, ""});
         c.wheelsets.push_back(w);
-        c.energyStored = c.add("energy_stored_J");
-        c.energyInput = c.add("energy_input_J");
-        c.energyDissipated = c.add("energy_dissipated_J");
+        c.add({"energy_stored", "J", R::EnergyStored, ""});
+        c.add({"energy_input", "J", R::EnergyInput, ""});
+        c.add({"energy_dissipated", "J", R::EnergyDissipated, ""});
     }
     /// t, roll, plate, side bearing, wheels L/R, lifts L/R, lateral, E, W, D
     std::vector<double> row(double t, double roll = 0, double liftL = 0, double liftR = 0, double lateral = 0,

@@ -38,13 +38,15 @@ __all__ = [
 
 # Unit of each history channel, from the last part of its name (docs/model.md, "Outputs").
 # Channels without a unit part are dimensionless, unit "1": the wedge slip flags
-# (1 = slipping), the reduced model's truck_support_mode code and truck_mode_consistent flag.
-_UNIT_SUFFIXES = {"s": "s", "deg": "deg", "in": "in", "lb": "lb", "J": "J"}
+# (1 = slipping), the reduced model's truck_support_mode code and truck_mode_consistent flag,
+# and the freight ratios (wheel unloading, L/V: "_ratio"). Car-body accelerations are in g.
+_UNIT_SUFFIXES = {"s": "s", "deg": "deg", "in": "in", "lb": "lb", "J": "J", "g": "g"}
 
 
 def channel_unit(name):
     """The unit of a history channel, as its name ends: 's', 'deg', 'in', 'lb'
-    (pound-force) or 'J'; '1' (dimensionless) for a name without one of them."""
+    (pound-force), 'J' or 'g' (standard gravity); '1' (dimensionless) for a name without
+    one of them ('_ratio' included)."""
     parts = name.rsplit("_", 1)
     return _UNIT_SUFFIXES.get(parts[-1], "1") if len(parts) == 2 else "1"
 

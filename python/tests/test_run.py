@@ -43,6 +43,7 @@ def test_history_is_a_structured_array_with_units(halfcar):
     assert halfcar.units["t_s"] == "s" and halfcar.units["roll_deg"] == "deg"
     assert halfcar.units["side_bearing_F_L_lb"] == "lb" and halfcar.units["car_body_vertical_in"] == "in"
     assert halfcar.units["energy_stored_J"] == "J" and halfcar.units["wedge_vertical_slip_F_L"] == "1"
+    assert halfcar.units["car_body_lateral_accel_g"] == "g" and halfcar.units["l_over_v_F1_L_ratio"] == "1"
     assert h["roll_deg"].dtype.metadata["unit"] == "deg"
     assert h.dtype.metadata["units"] == halfcar.units
     assert np.max(np.abs(h["roll_deg"])) == pytest.approx(halfcar.summary["max_roll_deg"], rel=1e-12)
@@ -54,9 +55,9 @@ def test_history_is_a_structured_array_with_units(halfcar):
 def test_every_model_runs_with_every_channel_in_a_unit(model):
     r = rockroll.run(LOADED, model=model, duration_s=0.5)
     assert r.summary["model"] == model
-    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "1"}
+    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "g", "1"}
     # Dimensionless channels are flags and codes only; everything else names its unit.
-    assert all("_slip_" in n or n.startswith("truck_") for n, u in r.units.items() if u == "1"), r.units
+    assert all("_slip_" in n or n.startswith("truck_") or n.endswith("_ratio") for n, u in r.units.items() if u == "1"), r.units
     assert len(r.history) > 100
 
 
