@@ -22,6 +22,28 @@ ReducedHalfCarModel makeLevelModel() {
     return ReducedHalfCarModel(getCar(), [](double) { return RailState{}; });
 }
 constexpr double kSide[2] = {+1.0, -1.0};
+
+/// Every field of two truck solutions, compared with == (bit for bit).
+void expectBitIdentical(const TruckSolution& a, const TruckSolution& b) {
+    EXPECT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
+    EXPECT_EQ(a.consistent, b.consistent);
+    EXPECT_EQ(a.violation, b.violation);
+    for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster, &TruckSolution::zWheelset,
+                                     &TruckSolution::rollWheelset, &TruckSolution::yBolster, &TruckSolution::pinForce,
+                                     &TruckSolution::lateral, &TruckSolution::lateralFriction,
+                                     &TruckSolution::lateralAnchor})
+        EXPECT_EQ(a.*f, b.*f);
+    for (int i : {0, 1}) {
+        EXPECT_EQ(a.rim[i], b.rim[i]);
+        EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
+        EXPECT_EQ(a.wheel[i], b.wheel[i]);
+        EXPECT_EQ(a.friction[i], b.friction[i]);
+        EXPECT_EQ(a.spring[i], b.spring[i]);
+        EXPECT_EQ(a.compression[i], b.compression[i]);
+        EXPECT_EQ(a.wheelLift[i], b.wheelLift[i]);
+        EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
+    }
+}
 }  // namespace
 
 TEST(ReducedModel, StaticStateIsConsistentTwoPointEquilibrium) {
@@ -225,25 +247,7 @@ TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
             for (const TruckMode& previous : {mem.mode, far}) {
                 const TruckSolution a = findTruckEquilibrium(in, previous, cache), b = direct(in, previous);
                 ++searches;
-                EXPECT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
-                EXPECT_EQ(a.consistent, b.consistent);
-                EXPECT_EQ(a.violation, b.violation);
-                for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster,
-                                                 &TruckSolution::zWheelset, &TruckSolution::rollWheelset,
-                                                 &TruckSolution::yBolster, &TruckSolution::pinForce,
-                                                 &TruckSolution::lateral, &TruckSolution::lateralFriction,
-                                                 &TruckSolution::lateralAnchor})
-                    EXPECT_EQ(a.*f, b.*f);
-                for (int i : {0, 1}) {
-                    EXPECT_EQ(a.rim[i], b.rim[i]);
-                    EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
-                    EXPECT_EQ(a.wheel[i], b.wheel[i]);
-                    EXPECT_EQ(a.friction[i], b.friction[i]);
-                    EXPECT_EQ(a.spring[i], b.spring[i]);
-                    EXPECT_EQ(a.compression[i], b.compression[i]);
-                    EXPECT_EQ(a.wheelLift[i], b.wheelLift[i]);
-                    EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
-                }
+                expectBitIdentical(a, b);
             }
         }
     EXPECT_EQ(searches, 16);
@@ -309,22 +313,7 @@ TEST(ReducedModel, PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch) {
         const TruckSolution a = findTruckEquilibrium(inputs[k], previous, cache, &pruned);
         const TruckSolution b =
             findTruckEquilibrium(inputs[k], previous, cache, &exhaustive, TruckSearchPruning::Exhaustive);
-        ASSERT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
-        EXPECT_EQ(a.consistent, b.consistent);
-        EXPECT_EQ(a.violation, b.violation);
-        for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster,
-                                         &TruckSolution::zWheelset, &TruckSolution::rollWheelset,
-                                         &TruckSolution::yBolster, &TruckSolution::pinForce, &TruckSolution::lateral,
-                                         &TruckSolution::lateralFriction, &TruckSolution::lateralAnchor})
-            EXPECT_EQ(a.*f, b.*f);
-        for (int i : {0, 1}) {
-            EXPECT_EQ(a.rim[i], b.rim[i]);
-            EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
-            EXPECT_EQ(a.wheel[i], b.wheel[i]);
-            EXPECT_EQ(a.friction[i], b.friction[i]);
-            EXPECT_EQ(a.compression[i], b.compression[i]);
-            EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
-        }
+        expectBitIdentical(a, b);
     }
     EXPECT_EQ(pruned.searches, exhaustive.searches);
     EXPECT_EQ(pruned.enumerations, exhaustive.enumerations);
