@@ -85,8 +85,25 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
     }
     size_t total = 0;
     for (const auto& sp : specs) total += getSweepSpeeds(sp).size();
+    // parallelFor takes jobs in index order, so the longest go first: otherwise the
+    // full car's sweep sets, listed last, finish alone on one thread. Each set's cost
+    // is its simulated time over its model's speed (bench/README.md: the full car runs
+    // about 3x slower than the half car, the half car slower than the reduced model).
+    // The results do not depend on the order (each set is independent; stored by index).
+    auto costOf = [](const SweepSpec& sp) {
+        const std::string& m = sp.scenario.model;
+        const double speed = m == model_names::kFullCar ? 4 : m == model_names::kHalfCar ? 12 : 100;
+        return double(getSweepSpeeds(sp).size()) * sp.scenario.run.duration / speed;
+    };
+    std::vector<size_t> order(specs.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costOf(specs[a]) > costOf(specs[b]); });
+    std::vector<SweepSpec> longestFirst;
+    for (size_t i : order) longestFirst.push_back(specs[i]);
     SweepProgress progress("validate: sweeps", total);
-    const auto out = runSweeps(specs, s.jobs, [&progress](const SweepPoint& p) { progress(p); });
+    const auto sorted = runSweeps(longestFirst, s.jobs, [&progress](const SweepPoint& p) { progress(p); });
+    std::vector<std::vector<SweepPoint>> out(specs.size());
+    for (size_t k = 0; k < order.size(); ++k) out[order[k]] = sorted[k];
     for (size_t i = 0; i < results.size(); ++i) {
         results[i].up = out[2 * i];
         results[i].down = out[2 * i + 1];

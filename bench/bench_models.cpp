@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 #include <chrono>
+#include <ctime>
 #include <cstring>
 #include <fmt/format.h>
 #include <map>
@@ -141,6 +142,24 @@ int main(int argc, char** argv) {
         const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / repeats;
         fmt::print("  {:<10} {:>8.3f} ms for {} samples = {:.3f} % of the run's {:.2f} s wall\n", model, 1e3 * s,
                    rec.result.history.samples.size(), 100 * s / rec.result.wallTime, rec.result.wallTime);
+    }
+    // The reduced model's truck-mode search on the same case (bespoke/TruckEquilibrium.h):
+    // how many modes it solved and how many the choice bounds ruled out unsolved.
+    {
+        Scenario sc = getDefaultScenario();
+        sc.run.duration = gSimSeconds;
+        const ReducedHalfCarModel model(
+            sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeTrackMotion(sc), sc.car.wheelbase), sc.reduced);
+        ReducedRunStatistics st;
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t c0 = std::clock();
+        const RunResult r = simulateReduced(model, gSimSeconds, &st, {}, resolveRunLimits(sc.run.limits, sc.car));
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+        fmt::print("\nreduced truck-mode search ({} s simulated, {:.3f} s wall, {:.3f} s CPU, {:.0f} sim s / CPU s):\n"
+                   "  {} searches, {} modes solved ({:.2f} per search), {} ruled out unsolved, {} enumerations of every mode\n",
+                   r.simTime, wall, cpu, r.simTime / cpu, st.modes.searches, st.modes.solves,
+                   double(st.modes.solves) / double(st.modes.searches), st.modes.skipped, st.modes.enumerations);
     }
     fmt::print("\nratios (same run):\n");
     ratio("halfcar cpodes 0.0001", "fullcar cpodes 0.0001");

@@ -306,8 +306,21 @@ SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, dou
         d[i] = calcRelative(q, elements_[i]);
         rate[i] = d[i].derivative() * omega;
     }
+    // sin kτ, cos kτ of every sample, once (evaluate(Angles) is bit-identical to evaluate(τ)).
+    static const std::vector<TrigSeries::Angles> samples = [] {
+        std::vector<TrigSeries::Angles> a;
+        for (int s = 0; s < kSamples; ++s) a.emplace_back(2 * kPi * s / kSamples, kHarmonics);
+        return a;
+    }();
+    enum class Role { Other, Wheel, SideBearing, Rim };
+    std::vector<Role> role(elements_.size(), Role::Other);
+    for (size_t i = 0; i < elements_.size(); ++i)
+        role[i] = elements_[i].name == "wheel"          ? Role::Wheel
+                  : elements_[i].name == "side_bearing" ? Role::SideBearing
+                  : elements_[i].name == "rim"          ? Role::Rim
+                                                        : Role::Other;
     for (int s = 0; s < kSamples; ++s) {
-        const double tau = 2 * kPi * s / kSamples;
+        const TrigSeries::Angles& tau = samples[s];
         const double roll = q[0].evaluate(tau);
         rollMin = std::min(rollMin, roll);
         rollMax = std::max(rollMax, roll);
@@ -318,12 +331,12 @@ SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, dou
             const auto* law = std::get_if<PiecewiseLinearLaw>(&e.law);
             if (!law) continue;
             const double f = law->evaluate(d[i].evaluate(tau), rate[i].evaluate(tau));
-            if (e.name == "wheel") {
+            if (role[i] == Role::Wheel) {
                 p.maxWheelLoadLb = std::max(p.maxWheelLoadLb, f / units::lbf);
                 anyLift = anyLift || f <= 0;
-            } else if (e.name == "side_bearing") {
+            } else if (role[i] == Role::SideBearing) {
                 p.maxSideBearingLoadLb = std::max(p.maxSideBearingLoadLb, f / units::lbf);
-            } else if (e.name == "rim") {
+            } else if (role[i] == Role::Rim) {
                 plate += f;
             }
         }

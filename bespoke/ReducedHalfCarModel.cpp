@@ -63,9 +63,10 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const
     return in;
 }
 
-ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem) const {
+ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem,
+                                                              TruckSearchCounts* counts) const {
     Evaluation e;
-    e.truck = findTruckEquilibrium(makeTruckInputs(t, y, mem), mem.mode, *modeCache_);
+    e.truck = findTruckEquilibrium(makeTruckInputs(t, y, mem), mem.mode, *modeCache_, counts);
     const double pin = e.truck.pinForce;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     double Fz = -mass_ * units::g, M = h * pin;
@@ -209,7 +210,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     RunGuard guard(model.getChannels(), limits);
     double energy[2] = {0, 0};  // energy audit: rail work (RK4-weighted stage powers), slider dissipation
     auto accept = [&](double t) -> const std::vector<double>& {
-        const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem);
+        const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem, &st.modes);
         energy[1] += ReducedHalfCarModel::calcSliderDissipation(mem, e.truck);
         mem.mode = e.truck.mode;
         mem.compression = e.truck.compression;
@@ -230,10 +231,10 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     long k = 0;
     for (; k < n && !result.stop; ++k) {
         const double t = k * h;
-        const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem);
-        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + h / 2, y + h / 2 * e1.derivative, mem);
-        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + h / 2, y + h / 2 * e2.derivative, mem);
-        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + h, y + h * e3.derivative, mem);
+        const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + h / 2, y + h / 2 * e1.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + h / 2, y + h / 2 * e2.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + h, y + h * e3.derivative, mem, &st.modes);
         y += h / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
         energy[0] += h / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
         if (!y.allFinite()) {

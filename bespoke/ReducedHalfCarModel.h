@@ -62,7 +62,8 @@ public:
     /// The static state and truck memory as one flat vector, the layout of
     /// RunResult::finalState and of simulateReduced's `initial`.
     std::vector<double> calcStaticFlatState() const;
-    Evaluation evaluate(double t, const State& y, const TruckMemory& memory) const;
+    /// counts: the truck-mode search's counts are added there (nullptr: not counted).
+    Evaluation evaluate(double t, const State& y, const TruckMemory& memory, TruckSearchCounts* counts = nullptr) const;
 
     /// What one output time records: the half car's common values and this model's truck.
     struct Sample : HalfCarSample {
@@ -98,7 +99,8 @@ private:
 };
 
 struct ReducedRunStatistics {
-    long steps = 0, inconsistentSteps = 0, modeSearches = 0;
+    long steps = 0, inconsistentSteps = 0;
+    TruckSearchCounts modes;  ///< every truck-mode search of the run
 };
 
 /// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz). From static

@@ -59,6 +59,13 @@ double TrigSeries::evaluate(double tau) const {
     return v;
 }
 
+double TrigSeries::evaluate(const Angles& a) const {
+    if (getDegree() > a.degree) throw std::logic_error("TrigSeries::evaluate: angles of too low a degree");
+    double v = c_[0];
+    for (int k = 1; k <= getDegree(); ++k) v += c_[2 * k - 1] * a.cos[k] + c_[2 * k] * a.sin[k];
+    return v;
+}
+
 TrigSeries TrigSeries::derivative() const {
     TrigSeries d(getDegree());
     for (int k = 1; k <= getDegree(); ++k) {
@@ -148,6 +155,14 @@ std::vector<double> TrigSeries::findRoots(double level) const {
     double scale = std::abs(c_[0] - level);
     for (int i = 1; i < size_; ++i) scale = std::max(scale, std::abs(c_[i]));
     if (scale == 0) return {};
+    // Out of reach: |s(τ) − c₀| ≤ Σ|(a_k, b_k)| for every τ, so when c₀ − level exceeds
+    // that by more than the acceptance test below (1e-8·scale) plus the rounding of an
+    // evaluation (bounded by 1e-12 of the coefficients' sum), every candidate the
+    // eigenvalues could give is rejected there: the answer is {} without solving.
+    double reach = 0, sum = std::abs(c_[0]) + std::abs(level);
+    for (int k = 1; k <= getDegree(); ++k)
+        reach += std::hypot(c_[2 * k - 1], c_[2 * k]), sum += std::abs(c_[2 * k - 1]) + std::abs(c_[2 * k]);
+    if (std::abs(c_[0] - level) - reach > 1e-8 * scale + 1e-12 * sum) return {};
     int N = getDegree();
     while (N > 0 && std::hypot(c_[2 * N - 1], c_[2 * N]) < 1e-14 * scale) --N;
     if (N == 0) return {};
@@ -171,10 +186,11 @@ std::vector<double> TrigSeries::findRoots(double level) const {
     for (int i = 0; i < deg; ++i) {
         if (std::abs(std::abs(z[i]) - 1) > 1e-3) continue;
         double tau = std::arg(z[i]);
-        for (int it = 0; it < 4; ++it) {  // polish on the real line
-            const double slope = ds.evaluate(tau);
+        for (int it = 0; it < 4; ++it) {  // polish on the real line (one set of angles per τ)
+            const Angles a(tau, getDegree());
+            const double slope = ds.evaluate(a);
             if (slope == 0) break;
-            tau -= (evaluate(tau) - level) / slope;
+            tau -= (evaluate(a) - level) / slope;
         }
         if (std::abs(evaluate(tau) - level) > 1e-8 * scale) continue;
         tau = std::fmod(tau, kTwoPi);

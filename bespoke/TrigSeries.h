@@ -46,6 +46,8 @@ public:
     double& updSin(int k);
 
     double evaluate(double tau) const;
+    /// The same from precomputed angles (bit-identical to evaluate(a.tau)).
+    double evaluate(const Angles& a) const;
     TrigSeries derivative() const;  ///< ds/dτ
     /// ∫ s(τ) dτ over [t0, t1], exactly.
     double integrate(double t0, double t1) const;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <memory>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 namespace rockroll {
@@ -443,6 +444,63 @@ struct SearchContext {
     }
 };
 
+/// Lower bounds on a mode's violation from its spring, wedge, gib and lateral-wedge
+/// choices alone, before any solve. Every check of one side's spring segment and
+/// wedge tests the same computed compression Z_i, and every gib and lateral-wedge
+/// check the same Y, each as "value inside an interval" with a unit:
+///   Z: free (−∞, 0], linear [0, travel], bottomed [travel, ∞), unit 0.1 mm;
+///      slip up (−∞, Z_old], slip down [Z_old, ∞), unit 0.1 mm;
+///      stick [Z_a − F_V/k_b, Z_a + F_V/k_b] (its check is |Φ| ≤ F_V with the stick
+///      row Φ = k_b (Z − Z_a)), unit 10 kN / k_b;
+///   Y: gibs open [−c, c], gib + [c, ∞), gib − (−∞, −c], unit 0.1 mm; lateral slip
+///      up [Y_old, ∞), down (−∞, Y_old]; stick Y_a ± F_H/k_bH, unit 10 kN / (2 k_bH).
+/// Two choices whose intervals are a gap G apart cannot both hold: at any value the
+/// larger of the two violations d₁/u₁, d₂/u₂ (d₁ + d₂ ≥ G) is at least G/(u₁ + u₂).
+/// kBoundSlack (in violation units: 0.01 N, 10⁻¹⁰ m) covers the rounding that separates
+/// the solved Φ from k_b (Z − Z_a) and Z − Z_old from its computed difference, many
+/// orders above what the solves show (test ReducedModel.ChoiceBoundsNeverExceedTheViolation).
+/// A mode whose bound is at least the best violation found so far can neither be
+/// consistent nor replace the best, so the search skips its solve: same answer, bit for bit.
+struct ChoiceBounds {
+    static constexpr double kBoundSlack = 1e-6;
+    std::array<std::array<std::array<double, 3>, 3>, 2> vertical{};  // [side][spring segment][wedge state]
+    std::array<std::array<double, 3>, 3> lateral{};                 // [lateral wedge][gib]
+
+    struct Interval {
+        double lo, hi, unit;
+    };
+    static double pairBound(const Interval& a, const Interval& b) {
+        const double gap = std::max(a.lo - b.hi, b.lo - a.hi);
+        return gap > 0 ? std::max(0.0, gap / (a.unit + b.unit) - kBoundSlack) : 0.0;
+    }
+
+    ChoiceBounds(const TruckGeometry& g, const TruckInputs& in) {
+        constexpr double inf = std::numeric_limits<double>::infinity(), length = 1e-4, force = 1e4;
+        for (int i : {0, 1}) {
+            const Interval spring[3] = {{-inf, 0, length}, {0, g.travel, length}, {g.travel, inf, length}};
+            const double stick = g.Fv / g.kBristle;
+            const Interval wedge[3] = {{in.wedgeAnchor[i] - stick, in.wedgeAnchor[i] + stick, force / g.kBristle},
+                                       {-inf, in.compressionOld[i], length},
+                                       {in.compressionOld[i], inf, length}};
+            for (int s = 0; s < 3; ++s)
+                for (int w = 0; w < 3; ++w) vertical[i][s][w] = pairBound(spring[s], wedge[w]);
+        }
+        const double stickY = g.Fh / g.kBristleLateral;
+        const Interval lateralWedge[3] = {
+            {in.lateralAnchor - stickY, in.lateralAnchor + stickY, force / (2 * g.kBristleLateral)},
+            {in.lateralOld, inf, length},
+            {-inf, in.lateralOld, length}};
+        const Interval gib[3] = {{-g.gibClearance, g.gibClearance, length}, {g.gibClearance, inf, length},
+                                 {-inf, -g.gibClearance, length}};
+        for (int w = 0; w < 3; ++w)
+            for (int c = 0; c < 3; ++c) lateral[w][c] = pairBound(lateralWedge[w], gib[c]);
+    }
+    double getBound(const TruckMode& m) const {
+        return std::max({vertical[0][int(m.spring[0])][int(m.wedge[0])], vertical[1][int(m.spring[1])][int(m.wedge[1])],
+                         lateral[int(m.lateralWedge)][int(m.gib)]});
+    }
+};
+
 constexpr int kMaxNeighbours = 7 + 7 * 2;
 
 /// findNeighbourModes without allocating; returns the count.
@@ -478,36 +536,49 @@ TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in
     return findTruckEquilibrium(in, previous, cache);
 }
 
-TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache) {
+double calcChoiceBound(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
+    return ChoiceBounds(g, in).getBound(mode);
+}
+
+TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache,
+                                   TruckSearchCounts* counts, TruckSearchPruning pruning) {
     // 1. The previous mode; 2. every mode that differs from it in one choice,
     // then in two (contacts often open and close together); 3. every mode.
-    // First consistent wins; else the smallest violation.
+    // First consistent wins; else the smallest violation (the first of equals).
     const SearchContext context(cache.getGeometry(), in, cache);
+    const ChoiceBounds bounds(cache.getGeometry(), in);
+    const bool prune = pruning == TruckSearchPruning::ChoiceBounds;
+    TruckSearchCounts local;
+    TruckSearchCounts& n = counts ? *counts : local;
+    ++n.searches;
+    ++n.solves;
     TruckSolution best = context.solve(previous);
     if (best.consistent) return best;
+    // True when m is consistent (best is then its solution). A mode whose bound is at
+    // least best.violation (> 1e-9 here) is neither consistent nor a smaller violation.
+    auto consider = [&](const TruckMode& m) {
+        if (prune && bounds.getBound(m) >= best.violation) {
+            ++n.skipped;
+            return false;
+        }
+        ++n.solves;
+        TruckSolution s = context.solve(m);
+        if (s.consistent || s.violation < best.violation) best = s;
+        return s.consistent;
+    };
     std::array<TruckMode, kMaxNeighbours> first, second;
     const int nFirst = fillNeighbourModes(previous, first);
-    for (int i = 0; i < nFirst; ++i) {
-        TruckSolution s = context.solve(first[i]);
-        if (s.consistent) return s;
-        if (s.violation < best.violation) best = s;
-    }
+    for (int i = 0; i < nFirst; ++i)
+        if (consider(first[i])) return best;
     for (int i = 0; i < nFirst; ++i) {
         const int nSecond = fillNeighbourModes(first[i], second);
-        for (int j = 0; j < nSecond; ++j) {
-            const TruckMode& m = second[j];
-            if (m == previous) continue;
-            TruckSolution s = context.solve(m);
-            if (s.consistent) return s;
-            if (s.violation < best.violation) best = s;
-        }
+        for (int j = 0; j < nSecond; ++j)
+            if (!(second[j] == previous) && consider(second[j])) return best;
     }
+    ++n.enumerations;
     static const std::vector<TruckMode> modes = enumerateTruckModes();
-    for (const TruckMode& m : modes) {
-        TruckSolution s = context.solve(m);
-        if (s.consistent) return s;
-        if (s.violation < best.violation) best = s;
-    }
+    for (const TruckMode& m : modes)
+        if (consider(m)) return best;
     return best;
 }
 

@@ -41,7 +41,8 @@
 // satisfies every inequality: closed-contact and wheel forces ≥ 0, open gaps and
 // lifts ≥ 0, each spring's Z inside its segment, |Φ| ≤ F_V in stick, and the
 // sliding direction matching the sign of Φ in slip. findTruckEquilibrium tries
-// the previous mode first, then every mode in a fixed order.
+// the previous mode first, then its neighbours, then every mode in a fixed order,
+// skipping the solve of modes that a bound from their choices alone rules out.
 #include "mbmodel/CarParameters.h"
 
 #include <Eigen/Dense>
@@ -141,10 +142,32 @@ private:
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
 
+/// What mode searches did (counts add up over calls).
+struct TruckSearchCounts {
+    long searches = 0;      ///< findTruckEquilibrium calls
+    long solves = 0;        ///< modes solved
+    long skipped = 0;       ///< modes ruled out by their choice bound, unsolved
+    long enumerations = 0;  ///< searches that reached the enumeration of every mode
+};
+
+/// ChoiceBounds: skip the solve of a mode whose spring/wedge or gib/lateral-wedge
+/// choices alone bound its violation from below by at least the best violation
+/// found so far (calcChoiceBound); the answer is the same, bit for bit.
+/// Exhaustive: solve every mode the search reaches (for checking).
+enum class TruckSearchPruning { ChoiceBounds, Exhaustive };
+
 /// The mode search: the previous mode, then its neighbours, then every mode;
 /// the first consistent one, or (none consistent) the one with the smallest violation.
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous);
 /// The same search with the cache's factorizations (same result, bit for bit).
-TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache);
+TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache,
+                                   TruckSearchCounts* counts = nullptr,
+                                   TruckSearchPruning pruning = TruckSearchPruning::ChoiceBounds);
+
+/// A lower bound on solveTruckMode(g, in, mode).violation from the mode's spring,
+/// wedge, gib and lateral-wedge choices alone: pairs of choices on one side (or on
+/// the lateral deflection) that ask the same compression (deflection) to lie in
+/// intervals a gap apart (TruckEquilibrium.cpp, ChoiceBounds).
+double calcChoiceBound(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
 
 }  // namespace rockroll

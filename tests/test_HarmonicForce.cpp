@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace { constexpr double kPi = 3.14159265358979323846; }
 
@@ -56,6 +58,33 @@ TEST(TrigSeries, FindsEveryCrossing) {
     for (double t : r2) EXPECT_NEAR(s.evaluate(t), 0.0, 1e-12);
     EXPECT_TRUE(TrigSeries::constant(2).findRoots(0).empty());
     EXPECT_TRUE(TrigSeries::cosine(1).findRoots(1.5).empty());
+}
+
+// findRoots answers {} without the eigenvalues when the level is beyond the series'
+// reach |c0 - level| > sum |(a_k, b_k)|: levels just inside the reach must still cross.
+TEST(TrigSeries, LevelsJustInsideTheReachStillCross) {
+    const TrigSeries s = makeSeries(0.1, 0.2, 0.3, 0.05, -0.4);  // reach hypot(.2,.3) + hypot(.05,.4)
+    const double reach = std::hypot(0.2, 0.3) + std::hypot(0.05, 0.4);
+    double top = -1e9, bottom = 1e9;  // the series' true extremes, sampled finely
+    for (int i = 0; i < 200000; ++i) {
+        const double v = s.evaluate(2 * kPi * i / 200000);
+        top = std::max(top, v), bottom = std::min(bottom, v);
+    }
+    ASSERT_LE(top - 0.1, reach);
+    EXPECT_FALSE(s.findRoots(top - 1e-4).empty());
+    EXPECT_FALSE(s.findRoots(bottom + 1e-4).empty());
+    EXPECT_TRUE(s.findRoots(0.1 + reach * 1.001).empty());
+    EXPECT_TRUE(s.findRoots(0.1 - reach * 1.001).empty());
+}
+
+// evaluate(Angles) is the same number as evaluate(τ), bit for bit (describe() relies on it).
+TEST(TrigSeries, EvaluateFromAnglesIsBitIdentical) {
+    const TrigSeries s = makeSeries(0.1, 0.2, 0.3, 0.05, -0.4);
+    for (int i = 0; i < 1000; ++i) {
+        const double tau = 2 * kPi * i / 1000 - 1.0;
+        EXPECT_EQ(s.evaluate(TrigSeries::Angles(tau, 2)), s.evaluate(tau)) << tau;
+    }
+    EXPECT_THROW(s.evaluate(TrigSeries::Angles(0.3, 1)), std::logic_error);
 }
 
 TEST(HarmonicForce, UnilateralContactMatchesQuadrature) {

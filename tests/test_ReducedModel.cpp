@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 using namespace rockroll;
@@ -21,6 +22,28 @@ ReducedHalfCarModel makeLevelModel() {
     return ReducedHalfCarModel(getCar(), [](double) { return RailState{}; });
 }
 constexpr double kSide[2] = {+1.0, -1.0};
+
+/// Every field of two truck solutions, compared with == (bit for bit).
+void expectBitIdentical(const TruckSolution& a, const TruckSolution& b) {
+    EXPECT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
+    EXPECT_EQ(a.consistent, b.consistent);
+    EXPECT_EQ(a.violation, b.violation);
+    for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster, &TruckSolution::zWheelset,
+                                     &TruckSolution::rollWheelset, &TruckSolution::yBolster, &TruckSolution::pinForce,
+                                     &TruckSolution::lateral, &TruckSolution::lateralFriction,
+                                     &TruckSolution::lateralAnchor})
+        EXPECT_EQ(a.*f, b.*f);
+    for (int i : {0, 1}) {
+        EXPECT_EQ(a.rim[i], b.rim[i]);
+        EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
+        EXPECT_EQ(a.wheel[i], b.wheel[i]);
+        EXPECT_EQ(a.friction[i], b.friction[i]);
+        EXPECT_EQ(a.spring[i], b.spring[i]);
+        EXPECT_EQ(a.compression[i], b.compression[i]);
+        EXPECT_EQ(a.wheelLift[i], b.wheelLift[i]);
+        EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
+    }
+}
 }  // namespace
 
 TEST(ReducedModel, StaticStateIsConsistentTwoPointEquilibrium) {
@@ -224,26 +247,78 @@ TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
             for (const TruckMode& previous : {mem.mode, far}) {
                 const TruckSolution a = findTruckEquilibrium(in, previous, cache), b = direct(in, previous);
                 ++searches;
-                EXPECT_TRUE(a.mode == b.mode) << a.mode.describe() << " / " << b.mode.describe();
-                EXPECT_EQ(a.consistent, b.consistent);
-                EXPECT_EQ(a.violation, b.violation);
-                for (double TruckSolution::*f : {&TruckSolution::zBolster, &TruckSolution::rollBolster,
-                                                 &TruckSolution::zWheelset, &TruckSolution::rollWheelset,
-                                                 &TruckSolution::yBolster, &TruckSolution::pinForce,
-                                                 &TruckSolution::lateral, &TruckSolution::lateralFriction,
-                                                 &TruckSolution::lateralAnchor})
-                    EXPECT_EQ(a.*f, b.*f);
-                for (int i : {0, 1}) {
-                    EXPECT_EQ(a.rim[i], b.rim[i]);
-                    EXPECT_EQ(a.sideBearing[i], b.sideBearing[i]);
-                    EXPECT_EQ(a.wheel[i], b.wheel[i]);
-                    EXPECT_EQ(a.friction[i], b.friction[i]);
-                    EXPECT_EQ(a.spring[i], b.spring[i]);
-                    EXPECT_EQ(a.compression[i], b.compression[i]);
-                    EXPECT_EQ(a.wheelLift[i], b.wheelLift[i]);
-                    EXPECT_EQ(a.wedgeAnchor[i], b.wedgeAnchor[i]);
-                }
+                expectBitIdentical(a, b);
             }
         }
     EXPECT_EQ(searches, 16);
+}
+
+namespace {
+/// Truck inputs far and near the static state (rolled, shifted, lifted car body; rails
+/// apart; remembered compressions, anchors and lateral deflections moved), from a fixed seed.
+std::vector<TruckInputs> makeScatteredInputs(const ReducedHalfCarModel& m, int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * double(rng() - rng.min()) / double(rng.max() - rng.min()); };
+    std::vector<TruckInputs> out;
+    for (int k = 0; k < count; ++k) {
+        const double scale = k % 2 == 0 ? 1.0 : 0.1;  // every other one near the static state
+        auto y = m.makeStaticState();
+        y[0] = scale * uniform(-0.08, 0.08), y[1] = scale * uniform(-0.02, 0.02), y[2] += scale * uniform(-0.03, 0.03);
+        auto mem = m.makeStaticMemory();
+        for (int i : {0, 1}) {
+            mem.compression[i] += scale * uniform(-0.02, 0.02);
+            mem.wedgeAnchor[i] = mem.compression[i] + scale * uniform(-0.002, 0.002);
+        }
+        mem.lateralDeflection = scale * uniform(-0.02, 0.02);
+        mem.lateralAnchor = mem.lateralDeflection + scale * uniform(-0.002, 0.002);
+        TruckInputs in = m.makeTruckInputs(0.1, y, mem);
+        in.railZ = {scale * uniform(-0.02, 0.02), scale * uniform(-0.02, 0.02)};
+        out.push_back(in);
+    }
+    return out;
+}
+}  // namespace
+
+// The search skips a mode when calcChoiceBound already rules it out, which is only
+// sound if the bound never exceeds the violation the mode's solve gives. Checked for
+// every mode at scattered states; the bound must also rule out many modes, or the
+// skip would be pointless.
+TEST(ReducedModel, ChoiceBoundsNeverExceedTheViolation) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckGeometry& g = m.getTruckGeometry();
+    const auto modes = enumerateTruckModes();
+    long positive = 0, checked = 0;
+    for (const TruckInputs& in : makeScatteredInputs(m, 12, 7)) {
+        for (const TruckMode& mode : modes) {
+            const double bound = calcChoiceBound(g, in, mode);
+            const TruckSolution s = solveTruckMode(g, in, mode);
+            ++checked;
+            if (bound > 0) ++positive;
+            ASSERT_LE(bound, s.violation) << mode.describe();
+        }
+    }
+    EXPECT_GT(positive, checked / 2) << "the bound rules out too few modes to matter";
+}
+
+// The pruned search returns the exhaustive search's solution, bit for bit, whatever
+// the previous mode, including searches that reach the enumeration of every mode.
+TEST(ReducedModel, PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckModeCache cache(m.getTruckGeometry());
+    const auto modes = enumerateTruckModes();
+    const auto inputs = makeScatteredInputs(m, 120, 11);
+    TruckSearchCounts pruned, exhaustive;
+    for (size_t k = 0; k < inputs.size(); ++k) {
+        const TruckMode& previous = modes[(k * 7919) % modes.size()];
+        const TruckSolution a = findTruckEquilibrium(inputs[k], previous, cache, &pruned);
+        const TruckSolution b =
+            findTruckEquilibrium(inputs[k], previous, cache, &exhaustive, TruckSearchPruning::Exhaustive);
+        expectBitIdentical(a, b);
+    }
+    EXPECT_EQ(pruned.searches, exhaustive.searches);
+    EXPECT_EQ(pruned.enumerations, exhaustive.enumerations);
+    EXPECT_GT(exhaustive.enumerations, 10);  // the states reach the full enumeration
+    EXPECT_EQ(exhaustive.skipped, 0);
+    EXPECT_EQ(pruned.solves + pruned.skipped, exhaustive.solves);
+    EXPECT_GT(pruned.skipped, exhaustive.solves / 10);  // the bounds save real work
 }
