@@ -18,7 +18,10 @@ std::string& commandLine() {
 void setCommandLine(int argc, char** argv) {
     std::string& line = commandLine();
     line.clear();
-    for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 0; i < argc; ++i) {
+        if (i) line += ' ';  // a char: GCC 12 -O2 -std=c++20 gives a false -Wrestrict for (i ? " " : "") + string
+        line += argv[i];
+    }
 }
 const std::string& getCommandLine() { return commandLine(); }
 

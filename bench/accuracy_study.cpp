@@ -219,7 +219,7 @@ int main(int argc, char** argv) {
             for (int q = 0; q < kQuantities; ++q) {
                 const double v = getQuantity(s, q), pct = calcChangePercent(v, getQuantity(ref.summary, q));
                 worst = std::max(worst, pct);
-                fmt::print(q == 4 ? " {:.4f} ({}) |" : (q == 0 ? " {:.3f} ({}) |" : " {:.0f} ({}) |"), v,
+                fmt::print(fmt::runtime(q == 4 ? " {:.4f} ({}) |" : (q == 0 ? " {:.3f} ({}) |" : " {:.0f} ({}) |")), v,
                            formatChange(pct));
             }
             fmt::print(" {} |\n", formatChange(worst));

@@ -18,7 +18,9 @@ FullCarModel::FullCarModel(const CarParameters& car, const TrackInput& track, Mo
     std::vector<Vec3> plates;
     for (double sign : {+1.0, -1.0}) {
         TruckSpec t;
-        t.label = sign > 0 ? "F" : "R";
+        // One char, not a const char* assignment: GCC 12 at -O2 in C++20 reports a false
+        // -Wrestrict for std::string = (cond ? "F" : "R") (a known GCC 12 false positive).
+        t.label.assign(1, sign > 0 ? 'F' : 'R');
         t.x = sign * half;
         t.carBodyLoad = car.getCarBodyWeight() / 2;
         t.threeDimensional = true;

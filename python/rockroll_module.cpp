@@ -62,12 +62,12 @@ py::object toPython(const nlohmann::ordered_json& j) {
         case nlohmann::ordered_json::value_t::array: {
             py::list out;
             for (const auto& v : j) out.append(toPython(v));
-            return std::move(out);
+            return out;  // moved implicitly (C++20)
         }
         case nlohmann::ordered_json::value_t::object: {
             py::dict out;
             for (const auto& [k, v] : j.items()) out[py::str(k)] = toPython(v);
-            return std::move(out);
+            return out;
         }
         default: throw std::runtime_error("unexpected JSON value (binary or discarded)");
     }
