@@ -140,9 +140,28 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
 
 nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points) {
     nlohmann::ordered_json records = nlohmann::ordered_json::array();
-    for (nlohmann::ordered_json p : points) {
-        p.erase("provenance");
-        records.push_back(std::move(p));
+    for (const nlohmann::ordered_json& p : points) {
+        // One flat row per speed: the per-truck loads and the criteria become columns
+        // named with their truck or criterion and their unit.
+        nlohmann::ordered_json r = nlohmann::ordered_json::object();
+        for (const auto& [key, value] : p.items()) {
+            if (key == "provenance") continue;
+            if (key == "trucks" && value.is_array()) {
+                for (const auto& t : value)
+                    for (const auto& [field, v] : t.items())
+                        if (field != "truck") r[fmt::format("truck_{}_{}", t.at("truck").get<std::string>(), field)] = v;
+            } else if (key == "criteria" && value.is_array()) {
+                for (const auto& c : value) {
+                    const std::string name = c.at("name").get<std::string>(), unit = c.at("unit").get<std::string>();
+                    r[fmt::format("criterion_{}_{}", name, unit)] = c.at("value");
+                    r[fmt::format("criterion_{}_limit_{}", name, unit)] = c.at("limit");
+                    r[fmt::format("criterion_{}_pass", name)] = c.at("pass");
+                }
+            } else {
+                r[key] = value;
+            }
+        }
+        records.push_back(std::move(r));
     }
     return records;
 }

@@ -160,7 +160,28 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
         EXPECT_EQ(table.find("provenance"), -1);
         ASSERT_NE(table.find("speed_mph"), -1);
         EXPECT_EQ(table.numbers("speed_mph"), (std::vector<double>{14, 15}));
-        expectCsvMatchesJson(table, json);
+        // The per-truck loads and the criteria are columns named by truck or criterion and unit.
+        nlohmann::json flat = nlohmann::json::array();
+        for (const auto& p : json) {
+            nlohmann::json r = p;
+            r.erase("trucks");
+            r.erase("criteria");
+            for (const auto& t : p.at("trucks"))
+                for (const auto& [field, v] : t.items())
+                    if (field != "truck") r["truck_" + t.at("truck").get<std::string>() + "_" + field] = v;
+            for (const auto& c : p.at("criteria")) {
+                const std::string name = c.at("name"), unit = c.at("unit");
+                r["criterion_" + name + "_" + unit] = c.at("value");
+                r["criterion_" + name + "_limit_" + unit] = c.at("limit");
+                r["criterion_" + name + "_pass"] = c.at("pass");
+            }
+            flat.push_back(r);
+        }
+        ASSERT_NE(table.find("truck_F_max_center_plate_load_lb"), -1);
+        ASSERT_NE(table.find("criterion_roll_peak_to_peak_deg"), -1);
+        ASSERT_NE(table.find("criterion_wheel_unloading_pass"), -1);
+        EXPECT_EQ(table.find("trucks"), -1);
+        expectCsvMatchesJson(table, flat);
     }
     {
         const Outcome o = runCli(dir, "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none "
