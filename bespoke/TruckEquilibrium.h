@@ -67,7 +67,7 @@ struct TruckMode {
     std::array<SpringSegment, 2> spring{SpringSegment::Linear, SpringSegment::Linear};
     WedgeState lateralWedge = WedgeState::Stick;  ///< SlipUp = Y increasing
     GibContact gib = GibContact::Open;
-    bool operator==(const TruckMode& o) const {  // headers stay C++17: no defaulted ==
+    bool operator==(const TruckMode& o) const {  // C++17 too (ROCKROLL_SYSTEM_SIMBODY): no defaulted ==
         return support == o.support && wheels == o.wheels && wedge == o.wedge && spring == o.spring &&
                lateralWedge == o.lateralWedge && gib == o.gib;
     }

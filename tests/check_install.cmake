@@ -1,6 +1,6 @@
 # Test Install.ExampleBuildsAndRunsAgainstTheInstalledPackage: installs the build
 # tree into WORK_DIR/prefix, configures and builds examples/cpp against that prefix
-# alone (a Debug build: NDEBUG and C++17 must come from the package), and runs it
+# alone (a Debug build: NDEBUG and the C++ standard must come from the package), and runs it
 # on the installed 70ton-loaded.toml.
 #   cmake -DBUILD_DIR=build -DSOURCE_DIR=. -DWORK_DIR=build/install_test -P tests/check_install.cmake
 cmake_minimum_required(VERSION 3.22)
