@@ -78,24 +78,23 @@ double EomHalfCarModel::calcLockedLinkDamping() const {
     return criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
 }
 
+TruckStatics EomHalfCarModel::calcTruckStatics() const {
+    TruckStaticLoad load;
+    load.carBody = car_.getCarBodyWeight() / 2;
+    load.linearSprings = simp_.linearSprings;
+    return TruckStatics(car_, load);
+}
+
 double EomHalfCarModel::calcStaticWheelLoad() const {
-    const CarParameters& c = car_;
-    const double springLoad = (c.getCarBodyWeight() / 2 + c.bolsterWeight) / 2;
-    return springLoad + (c.wheelsetWeight + c.sideFrameWeight);  // per wheel of the equivalent wheelset
+    return calcTruckStatics().getTruckSideWheelLoad();  // per wheel of the equivalent wheelset
 }
 
 EomHalfCarModel::State EomHalfCarModel::makeStaticState() const {
     const CarParameters& c = car_;
-    const double scale = c.contactStiffnessScale;
-    const double carBodyLoad = c.getCarBodyWeight() / 2;
-    const double springLoad = (carBodyLoad + c.bolsterWeight) / 2;
-    const double wheelLoad = calcStaticWheelLoad();
-    const double delta = wheelLoad / (2 * scale * c.wheelRailStiffness);
-    const double seatZ = c.springTopAboveRail - delta;
-    const double Z = simp_.linearSprings ? springLoad / laws_.spring.rate
-                                         : calcVerticalSpringCompression(springLoad, laws_.spring);
-    const double bolsterZ = seatZ - Z;
-    const double plateZ = bolsterZ + c.centerPlateAboveSprings - carBodyLoad / (scale * c.centerPlateStiffness);
+    const TruckStatics statics = calcTruckStatics();
+    const double delta = statics.calcWheelDeflection(2, 1);
+    const double bolsterZ = c.springTopAboveRail - delta - statics.getSpringCompression();
+    const double plateZ = bolsterZ + c.centerPlateAboveSprings - statics.getCenterPlateDeflection();
     State y = State::Zero();
     y[3 * Wheelset + 2] = c.wheelRadius - delta;
     y[3 * Bolster + 2] = bolsterZ;

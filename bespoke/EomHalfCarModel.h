@@ -28,6 +28,7 @@
 #include "contacts/UnilateralContactLaw.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/ChannelLayout.h"
+#include "mbmodel/TruckStatics.h"
 
 #include <Eigen/Dense>
 #include <array>
@@ -107,6 +108,8 @@ public:
     Sample calcSample(double t, const State& y, const double* energyIntegrals = nullptr) const;
     /// Static load of each wheel of the equivalent wheelset (two real wheels) [N].
     double calcStaticWheelLoad() const;
+    /// The truck's static equilibrium (the one definition, mbmodel/TruckStatics.h).
+    TruckStatics calcTruckStatics() const;
     /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J] (the
     /// integrals of calcEnergyRates, StiffIntegrator::getQuadrature()); NaN when null.
     void calcChannels(double t, const State& y, std::vector<double>& out,

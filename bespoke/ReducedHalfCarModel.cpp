@@ -19,6 +19,7 @@ constexpr const char* kSideName[2] = {"L", "R"};
 ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options)
     : car_(car), rails_(std::move(rails)), truck_(car) {
     if (options.truckWeight) {
+        truckWeight_ = TruckWeight::Carried;
         truck_.bolsterWeight = car.bolsterWeight;
         truck_.wheelsetWeight = 2 * (car.wheelsetWeight + car.sideFrameWeight);
     }
@@ -29,18 +30,24 @@ ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunc
     declareChannels();
 }
 
+TruckStatics ReducedHalfCarModel::calcTruckStatics() const {
+    TruckStaticLoad load;
+    load.carBody = mass_ * units::g;
+    load.weight = truckWeight_;
+    return TruckStatics(car_, load);
+}
+
 ReducedHalfCarModel::State ReducedHalfCarModel::makeStaticState() const {
-    const double Z = calcVerticalSpringCompression((mass_ * units::g + truck_.bolsterWeight) / 2,
-                                                 {truck_.Kv, truck_.travel, truck_.Kb});
+    // Rigid rails and center plate: no contact deflections.
     State y = State::Zero();
-    y[2] = truck_.springTopAboveRail - Z + truck_.cpAboveSprings + car_.cgAboveCenterPlate;
+    y[2] = truck_.springTopAboveRail - calcTruckStatics().getSpringCompression() + truck_.cpAboveSprings +
+           car_.cgAboveCenterPlate;
     return y;
 }
 
 ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeStaticMemory() const {
     TruckMemory m;
-    const double Z = calcVerticalSpringCompression((mass_ * units::g + truck_.bolsterWeight) / 2,
-                                                 {truck_.Kv, truck_.travel, truck_.Kb});
+    const double Z = calcTruckStatics().getSpringCompression();
     m.compression = {Z, Z};
     m.wedgeAnchor = {Z, Z};
     return m;

@@ -74,6 +74,9 @@ public:
     /// Static load of each wheel of the equivalent wheelset [N]: the truck's
     /// equilibrium at the static state on level rails.
     double calcStaticWheelLoad() const;
+    /// The truck's static loads and spring compression (the one definition,
+    /// mbmodel/TruckStatics.h; massless unless `[reduced] truck_weight`).
+    TruckStatics calcTruckStatics() const;
     /// energyIntegrals: {rail work, dissipated energy} since t = 0 [J]; NaN when null.
     void calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
                       const double* energyIntegrals = nullptr) const;
@@ -93,6 +96,7 @@ private:
     CarParameters car_;
     RailStateFunction rails_;
     TruckGeometry truck_;
+    TruckWeight truckWeight_ = TruckWeight::Massless;
     std::shared_ptr<const TruckModeCache> modeCache_;  // per-mode factorizations (shared by copies)
     double mass_ = 0, inertia_ = 0, staticZ_ = 0;
     ChannelTable<Sample> channels_;

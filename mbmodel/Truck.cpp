@@ -130,28 +130,29 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
     }
 }
 
+TruckStatics Truck::calcStatics() const {
+    TruckStaticLoad load;
+    load.carBody = spec_.carBodyLoad;
+    load.unsprungWeight = spec_.wheelsetGravity;
+    return TruckStatics(car_, load);
+}
+
 double Truck::calcStaticWheelLoad(int i) const {
-    const double springLoad = (spec_.carBodyLoad + car_.bolsterWeight) / 2;
-    const double n = spec_.wheelsets[i].lumpedWheelsets;
-    const double ownWeight = spec_.wheelsetGravity ? n * (car_.wheelsetWeight + car_.sideFrameWeight) / 2 : 0;
-    return springLoad / double(wheelsets_.size()) + ownWeight;
+    return calcStatics().calcWheelLoad(spec_.wheelsets[i].lumpedWheelsets, int(wheelsets_.size()));
 }
 
 double Truck::setStaticState(State& s) const {
+    const TruckStatics statics = calcStatics();
+    const int bodies = int(wheelsets_.size());
     double seatZ = 0;
-    for (size_t i = 0; i < wheelsets_.size(); ++i) {
-        const double n = spec_.wheelsets[i].lumpedWheelsets;
-        const double delta = calcStaticWheelLoad(int(i)) / (n * car_.contactStiffnessScale * car_.wheelRailStiffness);
+    for (int i = 0; i < bodies; ++i) {
+        const double delta = statics.calcWheelDeflection(spec_.wheelsets[i].lumpedWheelsets, bodies);
         wheelsets_[i].setOneQ(s, 2, car_.wheelRadius - delta);
-        seatZ += (car_.springTopAboveRail - delta) / double(wheelsets_.size());
+        seatZ += (car_.springTopAboveRail - delta) / double(bodies);
     }
-    const double springLoad = (spec_.carBodyLoad + car_.bolsterWeight) / 2;
-    const double Z = calcVerticalSpringCompression(
-        springLoad, {car_.springVerticalRate, car_.springTravel, car_.bottomingRate});
-    const double bolsterZ = seatZ - Z;
+    const double bolsterZ = seatZ - statics.getSpringCompression();
     bolster_.setOneQ(s, 2, bolsterZ);
-    const double plateDelta = spec_.carBodyLoad / (car_.contactStiffnessScale * car_.centerPlateStiffness);
-    return bolsterZ + car_.centerPlateAboveSprings - plateDelta;
+    return bolsterZ + car_.centerPlateAboveSprings - statics.getCenterPlateDeflection();
 }
 
 TruckPowers Truck::calcPowers(const State& s) const {

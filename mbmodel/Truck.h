@@ -11,6 +11,7 @@
 #include "contacts/WheelRailContact.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/ChannelLayout.h"
+#include "mbmodel/TruckStatics.h"
 
 #include <Simbody.h>
 #include <array>
@@ -88,6 +89,8 @@ public:
     double getX() const { return spec_.x; }
     /// Static load of each wheel of wheelset body i [N] (both wheels of a lumped body).
     double calcStaticWheelLoad(int wheelset) const;
+    /// This truck's static equilibrium (the one definition, TruckStatics.h).
+    TruckStatics calcStatics() const;
 
     const SimTK::MobilizedBody& getBolster() const { return bolster_; }
     const SimTK::MobilizedBody& getWheelset(int i) const { return wheelsets_[i]; }
