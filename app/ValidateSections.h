@@ -86,7 +86,7 @@ std::string makeModesSection();
 std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta);
 /// 8. The added degrees of freedom (ValidateAddedDof.cpp).
 std::string makeAddedDofSection(const Settings& s);
-/// 9. Twist-and-roll criteria per sweep (ValidateCriteria.cpp).
+/// 9. The freight criteria per sweep (ValidateCriteria.cpp).
 std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult>& sweeps);
 /// 10. Attribution of the half car – reduced model difference (ValidateAttribution.cpp).
 std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& meta);
