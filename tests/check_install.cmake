@@ -19,7 +19,7 @@ endfunction()
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(f bin/rockroll include/mbmodel/CarParameters.h include/scenarios/ScenarioRun.h include/simbody/Simbody.h
           share/rockroll/scenarios/70ton-loaded.toml share/rockroll/scenarios/reference/mit1976.toml
-          share/rockroll/app/plots.py lib/cmake/rockroll/rockrollConfig.cmake
+          share/rockroll/python/rockroll_plots/__main__.py share/rockroll/python/rockroll_plots/outputs.py lib/cmake/rockroll/rockrollConfig.cmake
           lib/cmake/rockroll/rockrollConfigVersion.cmake)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "not installed: ${prefix}/${f}")
@@ -28,7 +28,7 @@ endforeach()
 # The installed program runs from the prefix (its libraries found through its RPATH).
 run("installed rockroll --version" ${prefix}/bin/rockroll --version)
 message(STATUS "installed: ${out}")
-# It reads its data files (the report's numbers, the scenarios, validate's plots.py)
+# It reads its data files (the report's numbers, the scenarios, the plotting package python/rockroll_plots)
 # from its own prefix, not from the source tree it was built in.
 if(NOT out MATCHES "data files: ${prefix}/share/rockroll")
   message(FATAL_ERROR "the installed rockroll does not read its data from ${prefix}/share/rockroll:\n${out}")
