@@ -32,6 +32,19 @@ def _matching(header, pattern):
     return [(c, m.groups()) for c in header for m in [re.fullmatch(pattern, c)] if m]
 
 
+def _need(header, csv_file, columns):
+    """BadInput naming the first of `columns` the CSV lacks."""
+    for c in columns:
+        if c not in header:
+            raise BadInput(f"{csv_file}: no column {c}")
+
+
+def _write(fig, dest, name):
+    """The figure as dest/name (PNG) and its SVG twin, with the sidecar."""
+    os.makedirs(dest, exist_ok=True)
+    save(fig, os.path.join(dest, name), FORMATS)
+
+
 def _require(header, pattern, what, csv_file):
     cols = _matching(header, pattern)
     if not cols:
@@ -86,8 +99,7 @@ def plot_run(out, dest):
     track = f"{amp:.2f} in" if isinstance(amp, (int, float)) else "measured track"
     fig.suptitle(f"{summary.get('model', '?')} model, {summary.get('car', '?')}, {track}, "
                  f"{summary.get('speed_mph', float('nan')):.1f} mph")
-    os.makedirs(dest, exist_ok=True)
-    save(fig, os.path.join(dest, "timehistory.png"), FORMATS)
+    _write(fig, dest, "timehistory.png")
 
 
 def _same_number(cell, value):
@@ -105,10 +117,8 @@ def plot_sweep(out, dest):
     doc = read_json(os.path.join(out, "sweep.json"))
     if not isinstance(doc, dict) or not isinstance(doc.get("jumps"), list):
         raise BadInput("sweep.json: no \"jumps\" list (written by rockroll sweep --out)")
-    for c in ("car", "model", "amplitude_in", "direction", "failed", "speed_mph", "steady_roll_amplitude_deg",
-              "max_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "max_side_bearing_load_lb"):
-        if c not in header:
-            raise BadInput(f"{f}: no column {c}")
+    _need(header, f, ("car", "model", "amplitude_in", "direction", "failed", "speed_mph", "steady_roll_amplitude_deg",
+                  "max_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "max_side_bearing_load_lb"))
     groups = []
     for r in rows:
         g = (r["car"], r["model"], r["amplitude_in"])
@@ -145,8 +155,7 @@ def plot_sweep(out, dest):
     axm.set_xlabel("speed [mph]")
     ax.legend(fontsize=7)
     finish([ax, axm])
-    os.makedirs(dest, exist_ok=True)
-    save(fig, os.path.join(dest, "sweep_roll.png"), FORMATS)
+    _write(fig, dest, "sweep_roll.png")
     axl[0].set_title("wheel lift and maximum loads against speed")
     axl[0].set_ylabel("max wheel lift [in]")
     axl[1].set_ylabel("max wheel load [1000 lb]")
@@ -154,7 +163,7 @@ def plot_sweep(out, dest):
     axl[2].set_xlabel("speed [mph]")
     axl[0].legend(fontsize=7)
     finish(axl)
-    save(figl, os.path.join(dest, "sweep_loads.png"), FORMATS)
+    _write(figl, dest, "sweep_loads.png")
 
 
 # steady.csv's `stability` column (app/CommandResults.cpp makeSteadyJson).
@@ -167,9 +176,7 @@ def plot_steady(out, dest):
     f = "steady.csv"
     header, rows = read_csv(os.path.join(out, f))
     doc = read_json(os.path.join(out, "steady.json"))
-    for c in ("branch", "stability", "speed_mph", "roll_amplitude_deg", "wheel_lift_fraction"):
-        if c not in header:
-            raise BadInput(f"{f}: no column {c}")
+    _need(header, f, ("branch", "stability", "speed_mph", "roll_amplitude_deg", "wheel_lift_fraction"))
     fig, (ax, axl) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     labelled = set()
     for b in sorted({r["branch"] for r in rows}, key=int):
@@ -189,8 +196,7 @@ def plot_steady(out, dest):
     axl.set_xlabel("speed [mph]")
     ax.legend(fontsize=8)
     finish([ax, axl])
-    os.makedirs(dest, exist_ok=True)
-    save(fig, os.path.join(dest, "steady.png"), FORMATS)
+    _write(fig, dest, "steady.png")
 
 
 def plot_modes(out, dest):
@@ -199,9 +205,7 @@ def plot_modes(out, dest):
     f = "modes.csv"
     header, rows = read_csv(os.path.join(out, f))
     doc = read_json(os.path.join(out, "modes.json"))
-    for c in ("name", "frequency_hz", "damping_ratio", "table1_formula_hz"):
-        if c not in header:
-            raise BadInput(f"{f}: no column {c}")
+    _need(header, f, ("name", "frequency_hz", "damping_ratio", "table1_formula_hz"))
     fig, (ax, axt) = plt.subplots(1, 2, figsize=(13, 5.5))
     plot_csv(ax, f, rows, {}, "frequency_hz", "damping_ratio", marker="o", linestyle="none", color="C0")
     for r in rows:
@@ -223,8 +227,7 @@ def plot_modes(out, dest):
     axt.set_ylabel("model frequency [Hz]")
     axt.legend(fontsize=8)
     finish([ax, axt])
-    os.makedirs(dest, exist_ok=True)
-    save(fig, os.path.join(dest, "modes.png"), FORMATS)
+    _write(fig, dest, "modes.png")
 
 
 # The responses a study plot draws against each varied parameter, where study.csv has them.
@@ -253,9 +256,7 @@ def plot_study(out, dest):
     varied = doc.get("varied") if isinstance(doc, dict) else None
     if not isinstance(varied, list) or not varied:
         raise BadInput("study.json: no \"varied\" list of {key, column, unit, values}")
-    for c in ("point", "status"):
-        if c not in header:
-            raise BadInput(f"{f}: no column {c}")
+    _need(header, f, ("point", "status"))
     columns = []
     for v in varied:
         if not isinstance(v, dict) or v.get("column") not in header:
@@ -268,7 +269,6 @@ def plot_study(out, dest):
     responses = [(y, s, lab) for y, s, lab in STUDY_RESPONSES if y in header and any(r[y] != "" for r in rows)]
     if not responses:
         raise BadInput(f"{f}: none of the response columns {[y for y, _, _ in STUDY_RESPONSES]}")
-    os.makedirs(dest, exist_ok=True)
     for v in columns:
         x = v["column"]
         others = [o["column"] for o in columns if o is not v]
@@ -301,7 +301,7 @@ def plot_study(out, dest):
         axes[0].legend(fontsize=7)
         finish(axes)
         safe = re.sub(r"[^A-Za-z0-9_.-]", "_", x)
-        save(fig, os.path.join(dest, f"study_{safe}.png"), FORMATS)
+        _write(fig, dest, f"study_{safe}.png")
 
 
 PLOTTERS = {"run": plot_run, "sweep": plot_sweep, "steady": plot_steady, "modes": plot_modes, "study": plot_study}
