@@ -11,8 +11,11 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <stdexcept>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ;
 
 namespace rockroll::app {
 
@@ -33,24 +36,34 @@ int runPlotPackage(const std::vector<std::string>& args) {
     const std::string packageDir = findDataFile("python/rockroll_plots/__main__.py").parent_path().parent_path().string();
     std::vector<std::string> argv{python, "-m", "rockroll_plots"};
     argv.insert(argv.end(), args.begin(), args.end());
-    std::vector<char*> cargv;
-    for (auto& a : argv) cargv.push_back(a.data());
-    cargv.push_back(nullptr);
+    // The environment, with the package's folder on PYTHONPATH and no bytecode written
+    // into the installed or source tree.
+    std::vector<std::string> env{"PYTHONPATH=" + packageDir, "PYTHONDONTWRITEBYTECODE=1"};
+    for (char** e = environ; *e; ++e)
+        if (std::strncmp(*e, "PYTHONPATH=", 11) != 0 && std::strncmp(*e, "PYTHONDONTWRITEBYTECODE=", 24) != 0)
+            env.emplace_back(*e);
+    auto pointers = [](std::vector<std::string>& v) {
+        std::vector<char*> p;
+        for (auto& x : v) p.push_back(x.data());
+        p.push_back(nullptr);
+        return p;
+    };
+    std::vector<char*> cargv = pointers(argv), cenv = pointers(env);
+    // This process blocks SIGINT/SIGTERM for its handler thread (installInterruptHandler);
+    // the plotting process takes them as usual.
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t none;
+    sigemptyset(&none);
+    posix_spawnattr_setsigmask(&attr, &none);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
     std::fflush(stdout);
     std::fflush(stderr);
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error(fmt::format("cannot start {}: {}", python, std::strerror(errno)));
-    if (pid == 0) {
-        // The parent blocks SIGINT/SIGTERM for its handler thread (installInterruptHandler);
-        // the plotting process takes them as usual.
-        sigset_t none;
-        sigemptyset(&none);
-        sigprocmask(SIG_SETMASK, &none, nullptr);
-        setenv("PYTHONPATH", packageDir.c_str(), 1);
-        setenv("PYTHONDONTWRITEBYTECODE", "1", 1);  // nothing written into the installed or source tree
-        execv(python.c_str(), cargv.data());
-        _exit(127);
-    }
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, python.c_str(), nullptr, &attr, cargv.data(), cenv.data());
+    posix_spawnattr_destroy(&attr);
+    if (spawned != 0)
+        throw std::invalid_argument(fmt::format("ROCKROLL_PYTHON {}: cannot be run: {}", python, std::strerror(spawned)));
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for {}: {}", python, std::strerror(errno)));
