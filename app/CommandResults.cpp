@@ -147,7 +147,14 @@ nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
         nlohmann::ordered_json j;
         j["model"] = sc.model;
         j["car"] = sc.car.name;
-        j["amplitude_in"] = sc.track.measured.empty() ? nlohmann::ordered_json(sc.track.amplitude / units::inch) : nullptr;
+        // The amplitude as the points' summaries echo it (rounded as given, so the CSV's rows match it).
+        double amplitudeIn = sc.track.amplitude / units::inch;
+        for (const SweepPoint& p : results[i])
+            if (!p.failed) {
+                amplitudeIn = p.summary.amplitudeIn;
+                break;
+            }
+        j["amplitude_in"] = sc.track.measured.empty() ? nlohmann::ordered_json(amplitudeIn) : nullptr;
         j["direction"] = specs[i].direction == SweepDirection::Up ? "up" : "down";
         j["jump_speed_mph"] = std::isfinite(jump.speedMph) ? nlohmann::ordered_json(jump.speedMph) : nullptr;
         j["steady_roll_change_deg"] = jump.changeDeg;

@@ -1,6 +1,7 @@
 """`rockroll plot DIR`: the plots of one output directory of `rockroll run`, `sweep`,
 `steady`, `modes` or `study`, each as PNG and SVG with its sidecar (figures.save).
 The kind of output is told by the files it holds (KINDS)."""
+import math
 import os
 import re
 
@@ -103,10 +104,10 @@ def plot_run(out, dest):
 
 
 def _same_number(cell, value):
-    """A CSV cell against a JSON value: both empty/null, or the same number."""
+    """A CSV cell against a JSON value: both empty/null, or the same number (to 1e-9)."""
     if value is None or cell == "":
         return value is None and cell == ""
-    return float(cell) == float(value)
+    return math.isclose(float(cell), float(value), rel_tol=1e-9)  # a failed point's amplitude is not rounded
 
 
 def plot_sweep(out, dest):
@@ -121,6 +122,8 @@ def plot_sweep(out, dest):
                   "max_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "max_side_bearing_load_lb"))
     groups = []
     for r in rows:
+        if r["failed"] != "false":
+            continue  # drawn from no group (a failed point's amplitude_in is not rounded as the others')
         g = (r["car"], r["model"], r["amplitude_in"])
         if g not in groups:
             groups.append(g)
