@@ -138,6 +138,31 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
     return j;
 }
 
+nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
+                                          const std::vector<std::vector<SweepPoint>>& results) {
+    nlohmann::ordered_json jumps = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < specs.size() && i < results.size(); ++i) {
+        const Scenario& sc = specs[i].scenario;
+        const SweepJump jump = findSweepJump(results[i], specs[i].direction);
+        nlohmann::ordered_json j;
+        j["model"] = sc.model;
+        j["car"] = sc.car.name;
+        // The amplitude as the points' summaries echo it (rounded as given, so the CSV's rows match it).
+        double amplitudeIn = sc.track.amplitude / units::inch;
+        for (const SweepPoint& p : results[i])
+            if (!p.failed) {
+                amplitudeIn = p.summary.amplitudeIn;
+                break;
+            }
+        j["amplitude_in"] = sc.track.measured.empty() ? nlohmann::ordered_json(amplitudeIn) : nullptr;
+        j["direction"] = specs[i].direction == SweepDirection::Up ? "up" : "down";
+        j["jump_speed_mph"] = std::isfinite(jump.speedMph) ? nlohmann::ordered_json(jump.speedMph) : nullptr;
+        j["steady_roll_change_deg"] = jump.changeDeg;
+        jumps.push_back(std::move(j));
+    }
+    return jumps;
+}
+
 nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points) {
     nlohmann::ordered_json records = nlohmann::ordered_json::array();
     for (const nlohmann::ordered_json& p : points) {

@@ -33,6 +33,12 @@ nlohmann::ordered_json makeSweepPointJson(const SweepSpec& spec, const SweepPoin
 /// the provenance, which stays in sweep.json.
 nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points);
 
+/// Each sweep's jump (scenarios/SpeedSweep.h findSweepJump), for sweep.json's "jumps":
+/// {model, car, amplitude_in (null on measured track), direction, jump_speed_mph (null
+/// when none), steady_roll_change_deg}, one per spec in the order of `specs`.
+nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
+                                          const std::vector<std::vector<SweepPoint>>& results);
+
 struct SteadyResult {
     double inputAmplitude = 0;  ///< C: the fundamental of the cross-level [m]
     std::string inputNote;      ///< what the input is, in words

@@ -241,7 +241,7 @@ int sweepCommand(const SweepOptions& o) {
         for (const SweepPoint& p : results[i]) all.push_back(makeSweepPointJson(specs[i], p, getCommandLine()));
     if (dir) {
         dir->write("sweep.csv", [&](std::ostream& out) { writeRecordsCsv(out, makeSweepRecords(all)); });
-        dir->writeJson("sweep.json", all);
+        dir->writeJson("sweep.json", {{"points", all}, {"jumps", makeSweepJumpsJson(specs, results)}});
         dir->commit();
     }
     if (o.json) {

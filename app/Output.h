@@ -53,6 +53,8 @@ public:
 
     /// The final path of the file `name` (where it will be after commit()).
     std::filesystem::path getFinalPath(const std::string& name) const { return dir_ / name; }
+    /// Where the files go until commit() (`dir`.partial), for a writer of its own (rockroll plot).
+    const std::filesystem::path& getPartialPath() const { return partial_; }
     void write(const std::string& name, const std::function<void(std::ostream&)>& writer);
     void writeJson(const std::string& name, const nlohmann::ordered_json& document);  ///< app/JsonWriter.h
     void commit();

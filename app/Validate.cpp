@@ -4,6 +4,7 @@
 // and draws the plots. Every table and plot names the command that made it.
 #include "app/Commands.h"
 #include "app/JsonWriter.h"
+#include "app/PlotCommand.h"
 #include "app/ValidateSections.h"
 
 #include <chrono>
@@ -56,7 +57,7 @@ int validateCommand(const ValidateOptions& o) {
     s.runDuration = 20;
     fs::create_directories(s.out);
 
-    const std::string python = "/usr/bin/python3";
+    const std::string python = getPlotPython();
     if (runShell(python + " -c 'import matplotlib; print(1)' 2>/dev/null") != "1")
         throw std::runtime_error("validate needs Debian's matplotlib for the plots: apt-get install python3-matplotlib "
                                  "(it runs " + python + ", not the python3 on the PATH)");
@@ -104,8 +105,9 @@ int validateCommand(const ValidateOptions& o) {
 
     writeJsonFile(s.out / "validation.json", meta);
     step("plots");
-    const std::string plotCmd = fmt::format("{} '{}' '{}'", python, findDataFile("app/plots.py").string(), s.out.string());
-    if (std::system(plotCmd.c_str()) != 0) throw std::runtime_error("plotting failed: " + plotCmd);
+    if (const int rc = runPlotPackage({"validate", s.out.string()}); rc != 0)
+        throw std::runtime_error(fmt::format("plotting failed: {} -m rockroll_plots validate {} exited {}", python,
+                                             s.out.string(), rc));
 
     const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60;
     const std::string header = makeHeader(s, commit, minutes);

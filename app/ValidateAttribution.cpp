@@ -67,11 +67,10 @@ std::vector<Factor> makeFactors(bool quick) {
     return f;
 }
 
-/// Largest rise of the steady roll amplitude between neighbouring speeds (as section 2).
+/// The up sweep's jump rule (scenarios/SpeedSweep.h findSweepJump), as section 2.
 void findJump(const std::vector<double>& speeds, const std::vector<double>& amplitude, double& jump, double& rise) {
-    jump = NAN, rise = 0;
-    for (size_t i = 1; i < speeds.size(); ++i)
-        if (amplitude[i] - amplitude[i - 1] > rise) rise = amplitude[i] - amplitude[i - 1], jump = speeds[i];
+    const SweepJump j = findSweepJump(speeds, amplitude, SweepDirection::Up);
+    jump = j.speedMph, rise = j.changeDeg;
 }
 
 std::string fmtJump(double mph, double rise) {

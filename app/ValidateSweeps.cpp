@@ -18,19 +18,8 @@ const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {
                                          {"100ton-loaded", 0.75, 8, 18, "21"}, {"100ton-loaded", 1.0, 8, 18, "24"}};
 
 void findJumps(SweepResult& r) {
-    // Up: the largest rise of steady roll between neighbouring speeds; down: the largest fall.
-    double best = 0;
-    for (size_t i = 1; i < r.up.size(); ++i) {
-        if (r.up[i].failed || r.up[i - 1].failed) continue;
-        const double d = r.up[i].summary.steadyRollAmplitudeDeg - r.up[i - 1].summary.steadyRollAmplitudeDeg;
-        if (d > best) best = d, r.jumpUpMph = r.up[i].speedMph;
-    }
-    best = 0;
-    for (size_t i = 1; i < r.down.size(); ++i) {
-        if (r.down[i].failed || r.down[i - 1].failed) continue;
-        const double d = r.down[i - 1].summary.steadyRollAmplitudeDeg - r.down[i].summary.steadyRollAmplitudeDeg;
-        if (d > best) best = d, r.jumpDownMph = r.down[i].speedMph;
-    }
+    r.jumpUpMph = findSweepJump(r.up, SweepDirection::Up).speedMph;
+    r.jumpDownMph = findSweepJump(r.down, SweepDirection::Down).speedMph;
 }
 
 void writeSweepCsv(const Settings& s, const SweepResult& r) {

@@ -1,6 +1,7 @@
 // rockroll: freight-car rock-and-roll simulator (command line).
 #include "app/Commands.h"
 #include "app/Output.h"
+#include "app/PlotCommand.h"
 #include "app/Provenance.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ModelRegistry.h"
@@ -165,6 +166,13 @@ int main(int argc, char** argv) {
                             "criteria: minimum single-wheel load over static")
         ->capture_default_str()->check(inRange(wheelLoadLimitRange, ""));
 
+    app::PlotOptions plot;
+    CLI::App* plotCmd = cli.add_subcommand(
+        "plot", "plot a run, sweep, steady, modes or study output directory into DIR/plots/ (PNG and SVG, matplotlib "
+                "under ROCKROLL_PYTHON, default /usr/bin/python3)");
+    plotCmd->add_option("dir", plot.dir, "the output directory (written by --out)")->required()->check(CLI::ExistingDirectory);
+    plotCmd->add_flag("--force", plot.force, "replace an existing non-empty DIR/plots");
+
     cli.footer("Exit codes (no others): 0 ok; 2 bad input: scenario file (and line), key or option, value and the "
                "accepted range, or an output that cannot be written; 3 numerical failure (integrator failure, step "
                "limit, runaway state, wall-time limit) with time and state, or any other failure of the computation; "
@@ -188,6 +196,7 @@ int main(int argc, char** argv) {
         if (sweepCmd->parsed()) return app::sweepCommand(sweep);
         if (modesCmd->parsed()) return app::modesCommand(modes);
         if (validateCmd->parsed()) return app::validateCommand(validate);
+        if (plotCmd->parsed()) return app::plotCommand(plot);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

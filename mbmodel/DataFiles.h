@@ -1,6 +1,6 @@
 #pragma once
 // Where rockroll finds the data files it ships (the report's numbers, the built-in
-// scenarios, validate's plotting script): an installed program in its own prefix,
+// scenarios, the plotting package python/rockroll_plots): an installed program in its own prefix,
 // a build-tree program in the source tree it was configured from. No Simbody.
 #include <filesystem>
 #include <vector>
@@ -8,7 +8,7 @@
 namespace rockroll {
 
 /// The folders searched, in order, each holding the source tree's layout
-/// ("scenarios/reference/mit1976.toml", "app/plots.py"):
+/// ("scenarios/reference/mit1976.toml", "python/rockroll_plots/__main__.py"):
 ///  1. $ROCKROLL_DATA_DIR, when set;
 ///  2. <prefix>/share/rockroll, where <prefix> is two folders above the executable
 ///     (an installed program uses its own prefix's files first);

@@ -5,6 +5,7 @@
 #include "app/BuildInfo.h"
 #include "app/CommandResults.h"
 #include "app/Provenance.h"
+#include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
 #include "mbmodel/Units.h"
 #include "scenarios/ScenarioLoader.h"
@@ -19,6 +20,7 @@
 #include <atomic>
 #include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -94,6 +96,49 @@ py::array_t<double> toArray(const TimeHistory& h) {
 double positive(double v, const char* name) {
     if (!(v > 0)) throw py::value_error(std::string(name) + " must be a positive number");
     return v;
+}
+
+/// ChannelRole's flags by name, for the channel table the module returns.
+const std::vector<std::pair<ChannelRole, const char*>> kRoleNames{
+    {ChannelRole::Roll, "roll"},
+    {ChannelRole::CenterPlate, "center_plate"},
+    {ChannelRole::SideBearing, "side_bearing"},
+    {ChannelRole::TruckSideWheelLoad, "truck_side_wheel_load"},
+    {ChannelRole::SingleWheelLoad, "single_wheel_load"},
+    {ChannelRole::WheelLift, "wheel_lift"},
+    {ChannelRole::WheelsetLateral, "wheelset_lateral"},
+    {ChannelRole::WheelUnloading, "wheel_unloading"},
+    {ChannelRole::LOverV, "l_over_v"},
+    {ChannelRole::CarBodyVerticalAccel, "car_body_vertical_accel"},
+    {ChannelRole::CarBodyLateralAccel, "car_body_lateral_accel"},
+    {ChannelRole::EnergyStored, "energy_stored"},
+    {ChannelRole::EnergyInput, "energy_input"},
+    {ChannelRole::EnergyDissipated, "energy_dissipated"},
+};
+
+/// The history's columns as the model's channel table declares them (mbmodel/ChannelLayout.h):
+/// one dict per column {name, quantity, unit, roles, truck}, time first (TimeHistory: "t_s",
+/// then the channels). std::logic_error when the history's columns are not the table's.
+py::list toChannelTable(const TimeHistory& h, const ChannelLayout& layout) {
+    if (h.names.size() != layout.channels.size() + 1 || h.names.front() != "t_s")
+        throw std::logic_error("the history's columns are not t_s followed by the model's channel table");
+    py::list table;
+    auto entry = [&](const std::string& name, const ChannelInfo& c) {
+        py::list roles;
+        for (const auto& [role, roleName] : kRoleNames)
+            if (hasRole(c.roles, role)) roles.append(roleName);
+        py::dict d;
+        d["name"] = name, d["quantity"] = c.quantity, d["unit"] = c.unit, d["roles"] = roles, d["truck"] = c.truck;
+        table.append(d);
+    };
+    entry(h.names.front(), ChannelInfo{"t", "s", ChannelRole::None, ""});
+    for (size_t i = 0; i < layout.channels.size(); ++i) {
+        if (h.names[i + 1] != layout.channels[i].getColumn())
+            throw std::logic_error("history column " + h.names[i + 1] + " is not the channel table's " +
+                                   layout.channels[i].getColumn());
+        entry(h.names[i + 1], layout.channels[i]);
+    }
+    return table;
 }
 
 }  // namespace
@@ -191,6 +236,7 @@ PYBIND11_MODULE(_rockroll, m) {
             out["summary"] = toPython(app::makeRunJson(run, sc, command));
             out["names"] = run.result.history.names;
             out["data"] = toArray(run.result.history);
+            out["channels"] = toChannelTable(run.result.history, run.channels);
             out["stop"] = run.result.stop ? py::object(py::str(run.result.stop->regime)) : py::object(py::none());
             return out;
         },

@@ -85,6 +85,7 @@ ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
     ScenarioRun run;
     run.result = model->simulate(sc, start.from ? start.from->y : std::vector<double>{});
     run.summary = summarizeRun(run.result, model->getChannels(), opt);
+    run.channels = model->getChannels();
     run.staticReference = opt.staticReference.empty() ? run.result.history.samples.front() : opt.staticReference;
     run.restart = RestartState{d.name, run.result.finalState, motion.calcDistance(run.result.simTime), sc.speed};
     run.summary.model = d.name;

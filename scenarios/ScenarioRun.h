@@ -26,6 +26,7 @@ struct ScenarioRun {
     RunSummary summary;
     RestartState restart;                 ///< the end of this run, to continue from
     std::vector<double> staticReference;  ///< the static row this run's summary used
+    ChannelLayout channels;               ///< the model's channel table: history columns after t_s, with units and roles
 };
 
 /// The track's s(t) for a run of `sc` from `start`.

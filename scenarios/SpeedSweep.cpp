@@ -89,4 +89,24 @@ std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& spe
     return results;
 }
 
+SweepJump findSweepJump(const std::vector<double>& speedsMph, const std::vector<double>& steadyRollDeg,
+                        SweepDirection direction) {
+    SweepJump jump;
+    const double sign = direction == SweepDirection::Up ? 1 : -1;
+    for (size_t i = 1; i < speedsMph.size() && i < steadyRollDeg.size(); ++i) {
+        const double d = sign * (steadyRollDeg[i] - steadyRollDeg[i - 1]);  // false for a NaN
+        if (d > jump.changeDeg) jump.changeDeg = d, jump.speedMph = speedsMph[i];
+    }
+    return jump;
+}
+
+SweepJump findSweepJump(const std::vector<SweepPoint>& points, SweepDirection direction) {
+    std::vector<double> speeds, amplitudes;
+    for (const SweepPoint& p : points) {
+        speeds.push_back(p.speedMph);
+        amplitudes.push_back(p.failed ? std::numeric_limits<double>::quiet_NaN() : p.summary.steadyRollAmplitudeDeg);
+    }
+    return findSweepJump(speeds, amplitudes, direction);
+}
+
 }  // namespace rockroll

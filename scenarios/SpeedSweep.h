@@ -6,6 +6,7 @@
 #include "scenarios/ScenarioRun.h"
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,21 @@ std::vector<double> getSweepSpeeds(const SweepSpec& spec);
 
 /// One sweep. onPoint is called after every speed (from this thread).
 std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint = {});
+
+/// A sweep's jump: on the way up, the largest rise of the steady roll amplitude
+/// between neighbouring speeds; on the way down, the largest fall. speedMph is the
+/// speed after the change (NaN when the amplitude never rises, or falls); changeDeg
+/// its size (>= 0).
+struct SweepJump {
+    double speedMph = std::numeric_limits<double>::quiet_NaN();
+    double changeDeg = 0;
+};
+/// The jump of amplitudes [deg] at speeds [mph], in the order visited; a NaN amplitude
+/// (a failed point) takes no part: neither pair it belongs to counts.
+SweepJump findSweepJump(const std::vector<double>& speedsMph, const std::vector<double>& steadyRollDeg,
+                        SweepDirection direction);
+/// The jump of one sweep's points (failed points take no part).
+SweepJump findSweepJump(const std::vector<SweepPoint>& points, SweepDirection direction);
 
 /// Several sweeps on up to `jobs` threads; results in the order of `specs`.
 std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,

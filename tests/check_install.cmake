@@ -19,7 +19,7 @@ endfunction()
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(f bin/rockroll include/mbmodel/CarParameters.h include/scenarios/ScenarioRun.h include/simbody/Simbody.h
           share/rockroll/scenarios/70ton-loaded.toml share/rockroll/scenarios/reference/mit1976.toml
-          share/rockroll/app/plots.py lib/cmake/rockroll/rockrollConfig.cmake
+          share/rockroll/python/rockroll_plots/__main__.py share/rockroll/python/rockroll_plots/outputs.py lib/cmake/rockroll/rockrollConfig.cmake
           lib/cmake/rockroll/rockrollConfigVersion.cmake)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "not installed: ${prefix}/${f}")
@@ -28,7 +28,7 @@ endforeach()
 # The installed program runs from the prefix (its libraries found through its RPATH).
 run("installed rockroll --version" ${prefix}/bin/rockroll --version)
 message(STATUS "installed: ${out}")
-# It reads its data files (the report's numbers, the scenarios, validate's plots.py)
+# It reads its data files (the report's numbers, the scenarios, the plotting package python/rockroll_plots)
 # from its own prefix, not from the source tree it was built in.
 if(NOT out MATCHES "data files: ${prefix}/share/rockroll")
   message(FATAL_ERROR "the installed rockroll does not read its data from ${prefix}/share/rockroll:\n${out}")
@@ -69,6 +69,26 @@ endif()
 run("installed rockroll run" ${prefix}/bin/rockroll run ${prefix}/share/rockroll/scenarios/70ton-loaded.toml
   --duration-s 2 --json --out ${WORK_DIR}/cli)
 string(JSON cli_roll GET "${out}" max_roll_deg)
+# The installed program plots its run with the installed plotting package (PNG, SVG and sidecar).
+run("installed rockroll plot" ${prefix}/bin/rockroll plot ${WORK_DIR}/cli)
+foreach(f timehistory.png timehistory.svg timehistory.png.json)
+  if(NOT EXISTS ${WORK_DIR}/cli/plots/${f})
+    message(FATAL_ERROR "rockroll plot of the installed program wrote no ${WORK_DIR}/cli/plots/${f}")
+  endif()
+  file(SIZE ${WORK_DIR}/cli/plots/${f} size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "${WORK_DIR}/cli/plots/${f} is empty")
+  endif()
+endforeach()
+file(READ ${WORK_DIR}/cli/plots/timehistory.png.json sidecar)
+string(JSON first_csv GET "${sidecar}" lines 0 csv)
+if(NOT first_csv STREQUAL "history.csv")
+  message(FATAL_ERROR "the installed plot's sidecar draws from ${first_csv}, not history.csv")
+endif()
+file(GLOB_RECURSE pycache ${prefix}/share/rockroll/python/*.pyc)
+if(pycache)
+  message(FATAL_ERROR "plotting wrote bytecode into the installed prefix: ${pycache}")
+endif()
 # Both in micro-degrees (CMake has integer arithmetic only).
 function(micro var value)
   if(NOT value MATCHES "^([0-9]+)\\.([0-9]*)")

@@ -153,8 +153,11 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
                                         "--step-mph 1 --duration-s 1 --direction up --out sweep "
                                         "--set car.side_bearing_clearance=\"0.25 in\"");
         ASSERT_EQ(o.exitCode, 0) << o.err;
-        const auto json = nlohmann::json::parse(readText(dir / "sweep" / "sweep.json"));
+        const auto doc = nlohmann::json::parse(readText(dir / "sweep" / "sweep.json"));
+        const auto& json = doc.at("points");
         ASSERT_EQ(json.size(), 2u);
+        ASSERT_EQ(doc.at("jumps").size(), 1u);  // one sweep: up
+        EXPECT_EQ(doc.at("jumps")[0].at("direction"), "up");
         EXPECT_EQ(json[0].at("provenance").at("overrides")[0].at("key"), "car.side_bearing_clearance");
         const auto table = rockroll::test::parseCsvTable(readText(dir / "sweep" / "sweep.csv"));
         EXPECT_EQ(table.find("provenance"), -1);

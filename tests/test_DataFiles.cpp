@@ -31,7 +31,7 @@ private:
 TEST(DataFiles, FindsTheSourceTreesFilesInABuildTree) {
     EXPECT_EQ(fs::canonical(findDataFile("scenarios/reference/mit1976.toml")),
               fs::canonical(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/reference/mit1976.toml"));
-    EXPECT_EQ(fs::canonical(findDataFile("app/plots.py")), fs::canonical(fs::path(ROCKROLL_SOURCE_DIR) / "app/plots.py"));
+    EXPECT_EQ(fs::canonical(findDataFile("python/rockroll_plots/__main__.py")), fs::canonical(fs::path(ROCKROLL_SOURCE_DIR) / "python/rockroll_plots/__main__.py"));
 }
 
 TEST(DataFiles, DataDirFromTheEnvironmentComesFirst) {
@@ -42,7 +42,7 @@ TEST(DataFiles, DataDirFromTheEnvironmentComesFirst) {
     ASSERT_EQ(getDataDirs().front(), dir);
     EXPECT_EQ(findDataFile("scenarios/70ton-loaded.toml"), dir / "scenarios" / "70ton-loaded.toml");
     // A file the folder does not hold is still found further down the list.
-    EXPECT_EQ(fs::canonical(findDataFile("app/plots.py")), fs::canonical(fs::path(ROCKROLL_SOURCE_DIR) / "app/plots.py"));
+    EXPECT_EQ(fs::canonical(findDataFile("python/rockroll_plots/__main__.py")), fs::canonical(fs::path(ROCKROLL_SOURCE_DIR) / "python/rockroll_plots/__main__.py"));
 }
 
 TEST(DataFiles, AMissingFileNamesEveryPathTried) {

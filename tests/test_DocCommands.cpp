@@ -14,7 +14,7 @@
 //    a command may read what an earlier one wrote (`run --from-summary`).
 //  * Run for real, in that directory under the build tree with a link to
 //    scenarios/: `run` (with `--duration-s 0.2` appended when it has no duration),
-//    `modes`, and `steady --stability none`. Their `--json` output must be one JSON
+//    `modes`, `plot` and `steady --stability none`. Their `--json` output must be one JSON
 //    document, and every history.csv they write must read back as a table.
 //  * Everything else (the default case, sweeps, validate, steady with stability) is
 //    parsed only: ROCKROLL_PARSE_ONLY=1 makes rockroll check the command line
@@ -150,7 +150,7 @@ Outcome runRockroll(const fs::path& dir, const std::string& args, bool parseOnly
     return o;
 }
 
-const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate"};
+const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot"};
 
 bool has(const std::vector<std::string>& t, const std::string& w) { return std::find(t.begin(), t.end(), w) != t.end(); }
 
@@ -216,7 +216,7 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
             continue;
         }
         const std::string sub = t.size() > 1 ? t[1] : "";
-        const bool run = sub == "run" || sub == "modes" ||
+        const bool run = sub == "run" || sub == "modes" || sub == "plot" ||
                          (sub == "steady" && c.text.find("--stability none") != std::string::npos);
         if (sub == "run" && !has(t, "--duration-s")) args += " --duration-s 0.2";
         // Long commands: their flags at least.

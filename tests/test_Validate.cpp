@@ -1,8 +1,9 @@
 // rockroll validate: the committed report names the commit it came from, and
 // the quick run regenerates a complete report whose every file reads back: each
 // CSV as an RFC 4180 table with its required columns by name, each JSON, and each
-// plot's sidecar (app/plots.py) against the CSV columns it says it drew.
+// plot's sidecar (python/rockroll_plots (figures.py)) against the CSV columns it says it drew.
 #include "tests/CsvReader.h"
+#include "tests/PlotSidecar.h"
 #include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
@@ -23,6 +24,7 @@ namespace fs = std::filesystem;
 using rockroll::test::CsvTable;
 using rockroll::test::parseCsvTable;
 using rockroll::test::parseNumber;
+using rockroll::test::checkPlotSidecar;
 
 std::string readFile(const std::string& path) {
     std::ifstream in(path);
@@ -112,68 +114,6 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
     return errors;
 }
 
-/// Checks NAME.png.json (app/plots.py) against the CSV files it names: every
-/// line's x and y columns exist, the rows it selects are as many as it drew, and
-/// its sampled drawn values are those columns times the stated scale.
-std::vector<std::string> checkPlotSidecar(const fs::path& dir, const std::string& png) {
-    std::vector<std::string> errors;
-    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
-    nlohmann::json side;
-    try {
-        side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
-    } catch (const std::exception& e) {
-        return {png + ".json: " + e.what()};
-    }
-    if (!side["lines"].is_array() || side["lines"].empty()) return {png + ".json: no lines"};
-    std::map<std::string, CsvTable> tables;
-    for (const auto& l : side["lines"]) {
-        const std::string csv = l.at("csv").get<std::string>(), x = l.at("x").get<std::string>(),
-                          y = l.at("y").get<std::string>();
-        const std::string what = png + ": " + y + " against " + x + " from " + csv;
-        if (!tables.count(csv)) try {
-                tables[csv] = parseCsvTable(readFile((dir / csv).string()));
-            } catch (const std::exception& e) {
-                errors.push_back(what + ": " + e.what());
-                continue;
-            }
-        const CsvTable& t = tables[csv];
-        const int xi = t.find(x), yi = t.find(y);
-        if (xi < 0 || yi < 0) {
-            errors.push_back(what + ": no such column");
-            continue;
-        }
-        std::vector<const std::vector<std::string>*> rows;
-        for (const auto& r : t.rows) {
-            bool match = true;
-            for (const auto& [col, value] : l.at("where").items()) {
-                const int c = t.find(col);
-                match = match && c >= 0 && r[c] == value.get<std::string>();
-            }
-            if (match) rows.push_back(&r);
-        }
-        if (rows.size() != l.at("points").get<size_t>()) {
-            errors.push_back(what + ": drew " + l.at("points").dump() + " points, the CSV has " + std::to_string(rows.size()));
-            continue;
-        }
-        if (!rows.empty() && l.at("samples").empty()) errors.push_back(what + ": no samples");
-        const double xs = l.at("x_scale").get<double>(), ys = l.at("y_scale").get<double>();
-        for (const auto& smp : l.at("samples")) {
-            const size_t i = smp.at("index").get<size_t>();
-            if (i >= rows.size()) {
-                errors.push_back(what + ": sample index out of range");
-                continue;
-            }
-            const auto xv = parseNumber((*rows[i])[xi]), yv = parseNumber((*rows[i])[yi]);
-            const double dx = smp.at("x").get<double>(), dy = smp.at("y").get<double>();
-            auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
-            if (!xv || !yv || !near(dx, *xv * xs) || !near(dy, *yv * ys))
-                errors.push_back(what + ": point " + std::to_string(i) + " drawn at (" + std::to_string(dx) + ", " +
-                                 std::to_string(dy) + "), the CSV has (" + (*rows[i])[xi] + ", " + (*rows[i])[yi] + ")");
-        }
-    }
-    return errors;
-}
-
 /// What each plot of validate must draw: (CSV name prefix, x column, y column, y scale).
 struct Drawn {
     std::string csvPrefix, x, y;
@@ -204,7 +144,7 @@ std::set<Drawn> expectedLines(const std::string& png) {
 std::vector<std::string> checkPlotColumns(const fs::path& dir, const std::string& png) {
     const std::set<Drawn> expected = expectedLines(png);
     if (expected.empty()) return {png + ": a plot this test does not know; add what it must draw here"};
-    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (app/plots.py writes one)"};
+    if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (python/rockroll_plots (figures.py) writes one)"};
     nlohmann::json side;
     try {
         side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));

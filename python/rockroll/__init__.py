@@ -33,23 +33,8 @@ from . import _rockroll
 
 __all__ = [
     "load", "default_scenario", "from_summary", "run", "sweep", "steady", "modes", "Result", "Scenario",
-    "ScenarioError", "NumericalFailure", "scenario_keys", "channel_unit", "__version__",
+    "ScenarioError", "NumericalFailure", "scenario_keys", "__version__",
 ]
-
-# Unit of each history channel, from the last part of its name (docs/model.md, "Outputs").
-# Channels without a unit part are dimensionless, unit "1": the wedge slip flags
-# (1 = slipping), the reduced model's truck_support_mode code and truck_mode_consistent flag,
-# and the freight ratios (wheel unloading, L/V: "_ratio"). Car-body accelerations are in g.
-_UNIT_SUFFIXES = {"s": "s", "deg": "deg", "in": "in", "lb": "lb", "J": "J", "g": "g"}
-
-
-def channel_unit(name):
-    """The unit of a history channel, as its name ends: 's', 'deg', 'in', 'lb'
-    (pound-force), 'J' or 'g' (standard gravity); '1' (dimensionless) for a name without
-    one of them ('_ratio' included)."""
-    parts = name.rsplit("_", 1)
-    return _UNIT_SUFFIXES.get(parts[-1], "1") if len(parts) == 2 else "1"
-
 
 def _value_text(key, value):
     """An override's value as the text a scenario file or `--set KEY=VALUE` would give."""
@@ -108,12 +93,20 @@ def _call(name, *args, **kwargs):
 class Result:
     """One run: ``summary`` (dict, summary.json's content, with provenance), ``history``
     (NumPy structured array, one field per channel named as in history.csv, e.g.
-    ``roll_deg``, float64), ``units`` (channel -> unit; also each field's
-    ``dtype.metadata["unit"]``), and ``stopped`` ("derailed", "overturned" or None)."""
+    ``roll_deg``, float64), ``channel_table`` (one dict per column, in order: ``name``,
+    ``quantity``, ``unit``, ``roles``, ``truck``, as the model declares its channels,
+    mbmodel/ChannelLayout.h), ``units`` (channel -> its unit from that table: 's', 'deg',
+    'in', 'lb' (pound-force), 'J', 'g' (standard gravity), 'ratio', or '1' for a channel
+    declared without one: the wedge slip flags, the reduced model's truck mode code and
+    consistency flag; also each field's ``dtype.metadata["unit"]``), and ``stopped``
+    ("derailed", "overturned" or None)."""
 
-    def __init__(self, summary, names, data, stopped):
+    def __init__(self, summary, names, data, stopped, channel_table):
         self.summary = summary
-        self.units = {n: channel_unit(n) for n in names}
+        if [c["name"] for c in channel_table] != list(names):
+            raise RuntimeError("the history's columns are not the model's channel table")
+        self.channel_table = channel_table
+        self.units = {c["name"]: c["unit"] or "1" for c in channel_table}
         fields = [(n, _np.dtype(_np.float64, metadata={"unit": self.units[n]})) for n in names]
         dtype = _np.dtype(fields, metadata={"units": dict(self.units)})
         self.history = _np.ascontiguousarray(data).view(dtype).reshape(-1)
@@ -153,7 +146,7 @@ def run(scenario, model=None, speed_mph=None, duration_s=None, amplitude_in=None
                     amplitude_in=amplitude_in, max_wall_s=max_wall_s)
     out = _rockroll._run(sc, model, _float(speed_mph), _float(duration_s), _float(amplitude_in),
                          _float(max_wall_s), command)
-    return Result(out["summary"], out["names"], out["data"], out["stop"])
+    return Result(out["summary"], out["names"], out["data"], out["stop"], out["channels"])
 
 
 def _float(v):

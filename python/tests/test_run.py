@@ -43,7 +43,7 @@ def test_history_is_a_structured_array_with_units(halfcar):
     assert halfcar.units["t_s"] == "s" and halfcar.units["roll_deg"] == "deg"
     assert halfcar.units["side_bearing_F_L_lb"] == "lb" and halfcar.units["car_body_vertical_in"] == "in"
     assert halfcar.units["energy_stored_J"] == "J" and halfcar.units["wedge_vertical_slip_F_L"] == "1"
-    assert halfcar.units["car_body_lateral_accel_g"] == "g" and halfcar.units["l_over_v_F1_L_ratio"] == "1"
+    assert halfcar.units["car_body_lateral_accel_g"] == "g" and halfcar.units["l_over_v_F1_L_ratio"] == "ratio"
     assert h["roll_deg"].dtype.metadata["unit"] == "deg"
     assert h.dtype.metadata["units"] == halfcar.units
     assert np.max(np.abs(h["roll_deg"])) == pytest.approx(halfcar.summary["max_roll_deg"], rel=1e-12)
@@ -55,10 +55,33 @@ def test_history_is_a_structured_array_with_units(halfcar):
 def test_every_model_runs_with_every_channel_in_a_unit(model):
     r = rockroll.run(LOADED, model=model, duration_s=0.5)
     assert r.summary["model"] == model
-    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "g", "1"}
+    assert set(r.units.values()) <= {"s", "deg", "in", "lb", "J", "g", "ratio", "1"}
     # Dimensionless channels are flags and codes only; everything else names its unit.
-    assert all("_slip_" in n or n.startswith("truck_") or n.endswith("_ratio") for n, u in r.units.items() if u == "1"), r.units
+    assert all("_slip_" in n or n.startswith("truck_") for n, u in r.units.items() if u == "1"), r.units
     assert len(r.history) > 100
+
+
+@pytest.mark.parametrize("model", ["fullcar", "halfcar", "eom", "reduced"])
+def test_every_columns_unit_is_the_channel_tables(model, cli, tmp_path):
+    """Each history column's unit is its declaration's (mbmodel/ChannelLayout.h), not a
+    reading of its name: the table lists every column of history.csv in order, each name
+    is its quantity then its unit, and Result.units and the dtype carry that unit."""
+    r = rockroll.run(LOADED, model=model, duration_s=0.2)
+    code, _, err = cli("run", LOADED, "--model", model, "--duration-s", "0.2", "--out", "run")
+    assert code == 0, err
+    with open(tmp_path / "run" / "history.csv", newline="") as f:
+        header = next(csv.reader(f))
+    table = r.channel_table
+    assert [c["name"] for c in table] == header == list(r.history.dtype.names)
+    for c in table:
+        assert c["name"] == (c["quantity"] + "_" + c["unit"] if c["unit"] else c["quantity"]), c
+        assert r.units[c["name"]] == (c["unit"] or "1"), c
+        assert r.history.dtype.fields[c["name"]][0].metadata["unit"] == r.units[c["name"]]
+    by_name = {c["name"]: c for c in table}
+    assert by_name["t_s"]["unit"] == "s" and by_name["roll_deg"]["roles"] == ["roll"]
+    assert "side_bearing" in by_name["side_bearing_F_L_lb"]["roles"] and by_name["side_bearing_F_L_lb"]["truck"] == "F"
+    assert all(c["unit"] == "lb" for c in table if "center_plate" in c["roles"] or "side_bearing" in c["roles"])
+    assert all(c["unit"] == "in" for c in table if "wheel_lift" in c["roles"])
 
 
 def test_to_pandas_needs_pandas(halfcar, monkeypatch):

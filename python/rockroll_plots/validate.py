@@ -1,80 +1,10 @@
-#!/usr/bin/python3
-"""Plots for `rockroll validate`: reads results/validation.json and the CSV files
-it lists, writes PNGs beside them. Run with Debian's /usr/bin/python3
-(python3-matplotlib).
-
-Beside every NAME.png it writes NAME.png.json, which lists each data line drawn:
-the CSV file, the rows used (`where`: column -> value, all must match), the
-column names for x and y with their scale factors, the number of points, and a
-few of the drawn values taken back from matplotlib. tests/test_Validate.cpp
-compares them with the CSV columns read by name, so a plot drawing the wrong
-column fails a test."""
-import csv
-import json
+"""`rockroll validate`'s report figures: reads DIR/validation.json and the CSV files it
+lists, writes PNGs (each with its sidecar, figures.save) beside them."""
 import os
-import sys
 
-import matplotlib
+import matplotlib.pyplot as plt
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-def read_csv(path):
-    """Rows as dicts; refuses a file whose rows do not match its header."""
-    with open(path, newline="") as f:
-        records = list(csv.reader(f))
-    if not records:
-        raise ValueError(f"{path}: empty CSV")
-    header = records[0]
-    if len(set(header)) != len(header):
-        raise ValueError(f"{path}: repeated column names {header}")
-    rows = []
-    for n, rec in enumerate(records[1:], start=2):
-        if len(rec) != len(header):
-            raise ValueError(f"{path}: line {n} has {len(rec)} fields, header has {len(header)}")
-        rows.append(dict(zip(header, rec)))
-    return header, rows
-
-
-def column(rows, name, scale=1.0):
-    """Every row's value in column `name` (a missing column or empty cell is an error)."""
-    return [float(r[name]) * scale for r in rows]
-
-
-def select(rows, **where):
-    return [r for r in rows if all(r[k] == v for k, v in where.items())]
-
-
-# Lines drawn from CSV data, per figure, for the sidecar written by save().
-_drawn = {}
-
-
-def plot_csv(ax, csv_file, rows, where, x, y, xscale=1.0, yscale=1.0, **style):
-    """Draws column y against column x of the rows of csv_file matching `where`."""
-    pts = select(rows, **where)
-    (line,) = ax.plot(column(pts, x, xscale), column(pts, y, yscale), **style)
-    _drawn.setdefault(id(ax.figure), []).append(
-        {"line": line, "csv": csv_file, "where": where, "x": x, "y": y, "x_scale": xscale, "y_scale": yscale})
-    return line
-
-
-def save(fig, path):
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110, bbox_inches="tight")
-    lines = []
-    for d in _drawn.pop(id(fig), []):
-        xd, yd = d["line"].get_xdata(), d["line"].get_ydata()
-        n = len(xd)
-        picks = sorted({0, n // 4, n // 2, (3 * n) // 4, n - 1}) if n else []
-        lines.append({"csv": d["csv"], "where": d["where"], "x": d["x"], "y": d["y"], "x_scale": d["x_scale"],
-                      "y_scale": d["y_scale"], "label": d["line"].get_label(), "points": n,
-                      "samples": [{"index": i, "x": float(xd[i]), "y": float(yd[i])} for i in picks]})
-    plt.close(fig)
-    with open(path + ".json.tmp", "w") as f:
-        json.dump({"png": os.path.basename(path), "lines": lines}, f, indent=1)
-    os.replace(tmp, path)
-    os.replace(path + ".json.tmp", path + ".json")
+from .figures import plot_csv, read_csv, read_json, save
 
 
 def plot_time_histories(out, meta):
@@ -191,14 +121,8 @@ def plot_steady(out, meta):
         save(fig, os.path.join(out, st["file"].replace(".csv", ".png")))
 
 
-def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "results"
-    with open(os.path.join(out, "validation.json")) as f:
-        meta = json.load(f)
+def plot_validation(out):
+    meta = read_json(os.path.join(out, "validation.json"))
     plot_time_histories(out, meta)
     plot_sweeps(out, meta)
     plot_steady(out, meta)
-
-
-if __name__ == "__main__":
-    main()
