@@ -49,6 +49,7 @@ struct SweepOptions : CommonOptions {
     std::optional<double> maxWallS;  ///< wall-time limit of each speed's run [s]
     int jobs = 0;  ///< 0: one per core
     bool json = false, fresh = false;
+    bool resume = false;  ///< continue from the journal in --out DIR.partial (app/Journal.h)
 };
 
 struct ModesOptions : CommonOptions {

@@ -144,6 +144,8 @@ int main(int argc, char** argv) {
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
     addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
+    sweepCmd->add_flag("--resume", sweep.resume,
+                       "continue the interrupted sweep whose journal is in --out DIR.partial (README \"Output directories\")");
 
     app::ModesOptions modes;
     CLI::App* modesCmd = cli.add_subcommand(
