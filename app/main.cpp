@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
 
     app::MergeOptions merge;
     CLI::App* mergeCmd = cli.add_subcommand("merge", "merge the shard directories of one study into study.csv and study.json");
-    mergeCmd->add_option("dirs", merge.dirs, "shard output directories")->required()->check(CLI::ExistingDirectory);
+    mergeCmd->add_option("dirs", merge.dirs, "shard output directories")->required();
     mergeCmd->add_option("--out", merge.outDir, "write the merged study.csv and study.json into this directory")
         ->required();
     mergeCmd->add_flag("--force", merge.force, "replace an existing non-empty output directory");
