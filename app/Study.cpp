@@ -245,20 +245,15 @@ Scenario loadPointScenario(const StudyPlan& plan, size_t i) {
     return sc;
 }
 
+/// The sweeps of a point of kind "sweep": those `rockroll sweep` would run ([sweep] as its options).
 std::vector<SweepSpec> makePointSweeps(const StudyPlan& plan, const Scenario& sc) {
-    std::vector<SweepSpec> specs;
-    for (const char* dir : {"up", "down"}) {
-        if (plan.direction != "both" && plan.direction != dir) continue;
-        SweepSpec s;
-        s.scenario = sc;
-        s.fromMph = plan.fromMph;
-        s.toMph = plan.toMph;
-        s.stepMph = plan.stepMph;
-        s.direction = std::string(dir) == "up" ? SweepDirection::Up : SweepDirection::Down;
-        s.fresh = plan.fresh;
-        specs.push_back(s);
-    }
-    return specs;
+    SweepOptions o;
+    o.fromMph = plan.fromMph;
+    o.toMph = plan.toMph;
+    o.stepMph = plan.stepMph;
+    o.direction = plan.direction;
+    o.fresh = plan.fresh;
+    return makeSweepSpecs({sc}, o);
 }
 
 }  // namespace
@@ -370,15 +365,17 @@ StudyPlan loadStudy(const std::string& path) {
                                                 "seed = S }}",
                                                 where, plan.combine));
         } else if (const auto* t = c->as_table()) {
-            const auto n = t->get("latin_hypercube") ? t->get("latin_hypercube")->value<int64_t>() : std::nullopt;
-            const auto seed = t->get("seed") ? t->get("seed")->value<int64_t>() : std::nullopt;
-            if (!n || *n < 1 || *n > 100000 || !seed || *seed < 0 || t->size() != 2)
+            const toml::node* count = t->get("latin_hypercube");
+            const toml::node* seed = t->get("seed");
+            const int64_t n = count && count->is_integer() ? count->as_integer()->get() : 0;
+            const int64_t s = seed && seed->is_integer() ? seed->as_integer()->get() : -1;
+            if (n < 1 || n > 100000 || s < 0 || t->size() != 2)
                 throw ScenarioError(fmt::format("{}: expected {{ latin_hypercube = N, seed = S }} with N a whole number "
                                                 "in [1, 100000] and S a whole number ≥ 0",
                                                 where));
             plan.combine = "latin_hypercube";
-            plan.hypercubePoints = size_t(*n);
-            plan.seed = uint64_t(*seed);
+            plan.hypercubePoints = size_t(n);
+            plan.seed = uint64_t(s);
         } else {
             throw ScenarioError(fmt::format("{}: expected \"grid\", \"zip\" or {{ latin_hypercube = N, seed = S }}",
                                             where));

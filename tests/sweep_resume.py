@@ -15,6 +15,7 @@ usage: sweep_resume.py ROCKROLL_BIN SOURCE_DIR WORK_DIR
 5. SIGINT of a running sweep exits 130 and keeps its journal; --resume finishes it
    to the same result.
 """
+import csv
 import json
 import os
 import re
@@ -45,16 +46,13 @@ def without_wall_time(name, data):
     text = data.decode()
     if name.endswith(".json"):
         return re.sub(r'"wall_time_s": [^,\n]+', '"wall_time_s": -', text)
-    lines = text.split("\n")
-    header = lines[0].split(",")
-    col = header.index("wall_time_s")
-    out = [lines[0]]
-    for line in lines[1:]:
-        cells = line.split(",")
-        if len(cells) > col:
-            cells[col] = "-"
-        out.append(",".join(cells))
-    return "\n".join(out)
+    # Every row is one line; only the wall_time_s cell is blanked, each other cell compared as written.
+    rows = [next(csv.reader([line])) if line else [] for line in text.split("\n")]
+    col = rows[0].index("wall_time_s")
+    for row in rows[1:]:
+        if len(row) > col:
+            row[col] = "-"
+    return rows
 
 
 def compare(ref, out):
