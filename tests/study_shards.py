@@ -90,6 +90,17 @@ def main():
             fail(f"merge {' '.join(args)}: exit {r.returncode}, expected 2 with '{needle}': {r.stderr}")
         print(f"merge {' '.join(args)} refused: {r.stderr.strip()[:160]}")
 
+    # A derailed or overturned point is a result with its status, and the study carries on.
+    over = os.path.join(work, "over.toml")
+    with open(over, "w") as f:
+        f.write(f'scenario = {json.dumps(scenario)}\nmodel = "reduced"\n[set]\n"run.duration" = "2 s"\n'
+                '[vary]\n"limits.rollover_angle" = ["0.5 deg", "30 deg"]\n')
+    r = run("study", over, "--out", "over")
+    rows = list(csv.DictReader(open(os.path.join(work, "over", "study.csv")))) if r.returncode == 0 else []
+    if [row.get("status") for row in rows] != ["overturned", "ok"] or rows[0]["limits.rollover_angle_deg"] != "0.5":
+        fail(f"rollover study: exit {r.returncode}, statuses {[row.get('status') for row in rows]}: {r.stderr}")
+    print("a point past the rollover limit has status overturned; the next point runs")
+
     # Killed midway (SIGKILL), resumed with another --jobs: the same files.
     journal = os.path.join(work, "resumed.partial", "journal.jsonl")
     p = subprocess.Popen([binary, "study", study, "--out", "resumed", "--jobs", "2"], cwd=work,
