@@ -208,6 +208,9 @@ std::string describe(const Json& v) {
 }  // namespace
 
 std::optional<std::string> describeJsonDifference(const Json& a, const Json& b, const std::string& path) {
+    if (a.is_number() && b.is_number())  // 14 read back from text is unsigned, 14 built in C++ is signed
+        return a == b ? std::nullopt
+                      : std::optional<std::string>(fmt::format("{} is {} there, {} here", path, describe(a), describe(b)));
     if (a.type() != b.type()) return fmt::format("{} is {} there, {} here", path, describe(a), describe(b));
     if (a.is_object()) {
         for (const auto& [key, value] : b.items()) {
