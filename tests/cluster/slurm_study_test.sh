@@ -18,17 +18,31 @@ if ! command -v slurmctld > /dev/null || ! command -v munged > /dev/null; then
   [ "$(id -u)" -eq 0 ] || { echo "FAIL: slurm-wlm and munge are not installed (apt-get install slurm-wlm munge)"; exit 1; }
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends slurm-wlm munge > /dev/null
 fi
-rm -rf "$work" && mkdir -p "$work/slurm/state" "$work/slurm/spool" "$work/munge"
-chmod 700 "$work/munge"
-cfg="$work/slurm"
+rm -rf "$work" && mkdir -p "$work"
+# Slurm's and munge's sockets live under their state folders, whose paths must stay short
+# (a Unix socket path has at most 108 bytes): a folder of our own under /tmp, removed at the end.
+daemons=$(mktemp -d /tmp/rr-slurm.XXXXXX)
+mkdir -p "$daemons/slurm/state" "$daemons/slurm/spool" "$daemons/munge"
+chmod 700 "$daemons/munge"
+ln -s "$daemons" "$work/daemons"
+cfg="$daemons/slurm"
+stop() {
+  for f in "$cfg/slurmd.pid" "$cfg/slurmctld.pid" "$daemons/munge/munged.pid"; do
+    [ -f "$f" ] && kill "$(cat "$f")" 2> /dev/null || true
+  done
+  sleep 1
+  cp "$cfg"/*.log "$work/" 2> /dev/null || true
+  rm -rf "$daemons" "$work/daemons"
+}
+trap stop EXIT
 node=$(hostname -s)
 user=$(id -un)
 
 # munge: a key of our own and a socket of our own, so nothing of the host's is touched.
-dd if=/dev/urandom of="$work/munge/munge.key" bs=1024 count=1 status=none
-chmod 400 "$work/munge/munge.key"
-munged --force --key-file="$work/munge/munge.key" --socket="$work/munge/munge.sock" \
-  --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" --seed-file="$work/munge/munged.seed"
+dd if=/dev/urandom of="$daemons/munge/munge.key" bs=1024 count=1 status=none
+chmod 400 "$daemons/munge/munge.key"
+munged --force --key-file="$daemons/munge/munge.key" --socket="$daemons/munge/munge.sock" \
+  --pid-file="$daemons/munge/munged.pid" --log-file="$daemons/munge/munged.log" --seed-file="$daemons/munge/munged.seed"
 
 cat > "$cfg/slurm.conf" <<CONF
 ClusterName=rockrolltest
@@ -38,7 +52,7 @@ SlurmdUser=root
 SlurmctldPort=16817
 SlurmdPort=16818
 AuthType=auth/munge
-AuthInfo=socket=$work/munge/munge.sock
+AuthInfo=socket=$daemons/munge/munge.sock
 CredType=cred/munge
 StateSaveLocation=$cfg/state
 SlurmdSpoolDir=$cfg/spool
@@ -61,12 +75,6 @@ PartitionName=test Nodes=$node Default=YES MaxTime=INFINITE State=UP
 CONF
 export SLURM_CONF="$cfg/slurm.conf"
 
-stop() {
-  for f in "$cfg/slurmd.pid" "$cfg/slurmctld.pid" "$work/munge/munged.pid"; do
-    [ -f "$f" ] && kill "$(cat "$f")" 2> /dev/null || true
-  done
-}
-trap stop EXIT
 slurmctld -c
 slurmd -c
 for _ in $(seq 1 60); do
@@ -81,13 +89,13 @@ make_study "$source" "$work" "$bin"
 submitted=$(ROCKROLL="$bin" "$source/scripts/cluster/slurm-study.sh" "$work/study.toml" "$work/merged" 2)
 echo "$submitted"
 merge=$(echo "$submitted" | sed -n 's/.*merge: job \([0-9]*\).*/\1/p')
-for _ in $(seq 1 600); do
+for _ in $(seq 1 300); do
   [ -z "$(squeue -h -j "$merge" 2> /dev/null)" ] && break
   sleep 1
 done
 ls "$work/merged.shards"
 for f in "$work/merged.shards"/*.log; do echo "== $f"; cat "$f"; done
-[ -d "$work/merged" ] || { tail -20 "$cfg/slurmctld.log"; echo "FAIL: the merge job wrote no $work/merged"; exit 1; }
+[ -d "$work/merged" ] || { tail -20 "$cfg/slurmctld.log" "$cfg/slurmd.log"; echo "FAIL: the merge job wrote no $work/merged"; exit 1; }
 for k in 1 2; do
   grep -q "\"k\": $k" "$work/merged.shards/shard-$k/study.json" || { echo "FAIL: shard-$k is not shard $k"; exit 1; }
 done
