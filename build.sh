@@ -19,7 +19,7 @@ else
 fi
 packages=("${simbody_packages[@]}" build-essential cmake libeigen3-dev libtomlplusplus-dev libcli11-dev
           libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsundials-dev libssl-dev libtbb-dev
-          python3-matplotlib pybind11-dev python3-dev python3-numpy python3-pytest)
+          python3-matplotlib pybind11-dev python3-dev python3-numpy python3-pytest parallel)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

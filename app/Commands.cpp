@@ -1,6 +1,7 @@
 #include "app/Commands.h"
 #include "app/CommandResults.h"
 #include "app/JsonWriter.h"
+#include "app/BatchOutput.h"
 #include "app/Output.h"
 #include "app/Progress.h"
 #include "app/Provenance.h"
@@ -227,22 +228,42 @@ int sweepCommand(const SweepOptions& o) {
         checkFlagAgainstSets(o.maxWallS.has_value(), "--max-wall-s", "limits.max_wall_time", o.sets);
         checkAmplitudeFlag(!o.amplitudesIn.empty(), bases.back());
     }
-    std::optional<OutputDirectory> dir;
-    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
+    if (o.resume && o.outDir.empty())
+        throw ScenarioError("--resume: expected --out DIR, the output directory of the interrupted sweep");
     const std::vector<SweepSpec> specs = makeSweepSpecs(bases, o);
+    checkSweepSpecs(specs);
+    std::optional<OutputDirectory> dir;
+    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force, JournaledOutput{o.resume});
+    // Each finished speed goes into the journal, so that --resume continues (app/Journal.h).
+    std::string command = getCommandLine();
+    std::vector<std::vector<SweepPoint>> done;
+    std::unique_ptr<JournalWriter> journal;
+    if (dir)
+        journal = openBatchJournal(*dir, "sweep", makeSweepIdentity(specs), command,
+                                   [&](const ParsedJournal& j, const std::string& file) {
+                                       done = collectSweepPoints(j, specs, file);
+                                   });
     size_t total = 0;
     for (const auto& s : specs) total += getSweepSpeeds(s).size();
+    for (const auto& d : done) total -= d.size();
     SweepProgress progress("sweep", total);
     const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-    const auto results = runSweeps(specs, jobs, [&progress](const SweepPoint& p) { progress(p); });
+    const auto results = runSweepsFrom(specs, jobs, done, [&](const SweepPoint& p, size_t sweep, size_t index) {
+        if (journal) journal->append(toJournalJson(p, sweep, index));
+        progress(p);
+    });
+    size_t failed = 0;
+    for (const auto& r : results)
+        for (const SweepPoint& p : r) failed += p.failed ? 1 : 0;
 
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (size_t i = 0; i < specs.size(); ++i)
-        for (const SweepPoint& p : results[i]) all.push_back(makeSweepPointJson(specs[i], p, getCommandLine()));
+        for (const SweepPoint& p : results[i]) all.push_back(makeSweepPointJson(specs[i], p, command));
     if (dir) {
         dir->write("sweep.csv", [&](std::ostream& out) { writeRecordsCsv(out, makeSweepRecords(all)); });
         dir->writeJson("sweep.json", {{"points", all}, {"jumps", makeSweepJumpsJson(specs, results)}});
-        dir->commit();
+        journal.reset();
+        commitBatch(*dir);
     }
     if (o.json) {
         fmt::print("{}\n", all.dump());
@@ -271,7 +292,7 @@ int sweepCommand(const SweepOptions& o) {
         if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("sweep.csv").string(),
                             dir->getFinalPath("sweep.json").string());
     }
-    return progress.getFailed() ? kExitFailedPoints : kExitOk;
+    return failed ? kExitFailedPoints : kExitOk;
 }
 
 int modesCommand(const ModesOptions& o) {

@@ -49,6 +49,7 @@ struct SweepOptions : CommonOptions {
     std::optional<double> maxWallS;  ///< wall-time limit of each speed's run [s]
     int jobs = 0;  ///< 0: one per core
     bool json = false, fresh = false;
+    bool resume = false;  ///< continue from the journal in --out DIR.partial (app/Journal.h)
 };
 
 struct ModesOptions : CommonOptions {
@@ -65,6 +66,24 @@ struct ValidateOptions {
     double wheelLoadLimit = 0.10; ///< minimum single-wheel load / static
 };
 
+/// rockroll study STUDY.toml --out DIR [--shard K/N] [--jobs J] [--resume] [--force] (app/Study.h).
+struct StudyOptions {
+    std::string study;
+    std::string outDir;
+    std::string shard = "1/1";  ///< K/N: the points i with i mod N = K − 1
+    int jobs = 0;               ///< 0: one per core
+    bool resume = false, force = false;
+};
+
+/// rockroll merge DIR... --out DIR [--force].
+struct MergeOptions {
+    std::vector<std::string> dirs;
+    std::string outDir;
+    bool force = false;
+};
+
+int studyCommand(const StudyOptions& options);
+int mergeCommand(const MergeOptions& options);
 int runDefaultCase();
 int validateCommand(const ValidateOptions& options);
 int modesCommand(const ModesOptions& options);

@@ -1,5 +1,6 @@
 #include "app/Output.h"
 #include "app/JsonWriter.h"
+#include "app/Journal.h"
 #include "mbmodel/CsvWriter.h"
 #include "scenarios/ScenarioLoader.h"
 
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <pthread.h>
 #include <set>
 #include <thread>
@@ -38,6 +40,11 @@ void dropTemporary(const fs::path& p) {
     std::lock_guard lock(getTemporariesMutex());
     getTemporaries().erase(p);
 }
+/// DIR.partial directories kept for --resume (OutputDirectory::keepPartial), named on SIGINT/SIGTERM.
+std::set<fs::path>& getKeptPartials() {
+    static std::set<fs::path> k;
+    return k;
+}
 }  // namespace
 
 void installInterruptHandler() {
@@ -56,6 +63,10 @@ void installInterruptHandler() {
         }
         fmt::print(stderr, "\nrockroll: interrupted by {}; temporaries removed, nothing half-written (exit 130)\n",
                    sig == SIGINT ? "SIGINT" : "SIGTERM");
+        for (const fs::path& p : getKeptPartials())
+            fmt::print(stderr, "rockroll: the finished points are kept in {}: the same command with --resume "
+                               "continues, --force starts over\n",
+                       (p / kJournalFileName).string());
         std::fflush(stderr);
         _exit(130);
     }).detach();
@@ -112,6 +123,13 @@ void writeRecordsCsv(std::ostream& out, const nlohmann::ordered_json& records) {
 }
 
 OutputDirectory::OutputDirectory(fs::path dir, bool force, const std::string& flag)
+    : OutputDirectory(std::move(dir), force, std::optional<JournaledOutput>{}, flag) {}
+
+OutputDirectory::OutputDirectory(fs::path dir, bool force, JournaledOutput journaled, const std::string& flag)
+    : OutputDirectory(std::move(dir), force, std::optional<JournaledOutput>{journaled}, flag) {}
+
+OutputDirectory::OutputDirectory(fs::path dir, bool force, std::optional<JournaledOutput> journaled,
+                                 const std::string& flag)
     : dir_(std::move(dir)), force_(force) {
     if (dir_.empty()) throw ScenarioError(fmt::format("{} \"\": expected a directory path", flag));
     while (!dir_.has_filename() && dir_.has_parent_path() && dir_ != dir_.parent_path()) dir_ = dir_.parent_path();
@@ -126,14 +144,31 @@ OutputDirectory::OutputDirectory(fs::path dir, bool force, const std::string& fl
                                             "directory, or --force to replace it",
                                             flag, dir_.string()));
     }
+    if (journaled && fs::exists(partial_ / kJournalFileName, ec)) {
+        if (journaled->resume) {
+            resumed_ = kept_ = true;  // the journal is the user's: never removed from here on
+            return;
+        }
+        if (!force_)
+            throw ScenarioError(fmt::format("{} {}: {} holds the journal of an unfinished run; expected --resume to "
+                                            "continue it, or --force to start over",
+                                            flag, dir_.string(), (partial_ / kJournalFileName).string()));
+    }
     std::lock_guard lock(getTemporariesMutex());
     addTemporary(partial_);
     fs::remove_all(partial_);  // left by a run that was killed (SIGKILL) before it could clean up
     fs::create_directories(partial_);
 }
 
+void OutputDirectory::keepPartial() {
+    std::lock_guard lock(getTemporariesMutex());
+    dropTemporary(partial_);
+    getKeptPartials().insert(partial_);
+    kept_ = true;
+}
+
 OutputDirectory::~OutputDirectory() {
-    if (committed_) return;
+    if (committed_ || kept_) return;
     std::lock_guard lock(getTemporariesMutex());
     std::error_code ec;
     fs::remove_all(partial_, ec);
@@ -164,6 +199,7 @@ void OutputDirectory::commit() {
         fs::rename(partial_, dir_);
     }
     dropTemporary(partial_);
+    getKeptPartials().erase(partial_);
     committed_ = true;
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -44,9 +45,19 @@ void installInterruptHandler();
 /// file goes; commit() renames it to `dir` (replacing the old directory with `force`).
 /// Until then an exception (destructor) or SIGINT/SIGTERM (installInterruptHandler)
 /// removes `dir`.partial, and `dir` is left as it was.
+///
+/// A journaled directory (sweeps and studies, app/Journal.h) keeps `dir`.partial and its
+/// journal once keepPartial() is called: from then on neither an exception nor SIGINT or
+/// SIGTERM removes it, so `--resume` can continue. Its constructor finds an existing
+/// `dir`.partial with a journal and, with `resume`, keeps it (isResumed()); with `force`
+/// starts over; with neither refuses (ScenarioError: the journal would be lost).
+struct JournaledOutput {
+    bool resume = false;
+};
 class OutputDirectory {
 public:
     OutputDirectory(std::filesystem::path dir, bool force, const std::string& flag = "--out");
+    OutputDirectory(std::filesystem::path dir, bool force, JournaledOutput journaled, const std::string& flag = "--out");
     ~OutputDirectory();
     OutputDirectory(const OutputDirectory&) = delete;
     OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -59,9 +70,16 @@ public:
     void writeJson(const std::string& name, const nlohmann::ordered_json& document);  ///< app/JsonWriter.h
     void commit();
 
+    /// Where `name` is while the directory is being written (`dir`.partial/name).
+    std::filesystem::path getPartialPath(const std::string& name) const { return partial_ / name; }
+    bool isResumed() const { return resumed_; }
+    void keepPartial();
+
 private:
     std::filesystem::path dir_, partial_;
-    bool force_ = false, committed_ = false;
+    bool force_ = false, committed_ = false, kept_ = false, resumed_ = false;
+    OutputDirectory(std::filesystem::path dir, bool force, std::optional<JournaledOutput> journaled,
+                    const std::string& flag);
 };
 
 }  // namespace rockroll::app

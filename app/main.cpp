@@ -145,6 +145,8 @@ int main(int argc, char** argv) {
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
     addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
+    sweepCmd->add_flag("--resume", sweep.resume,
+                       "continue the interrupted sweep whose journal is in --out DIR.partial (README \"Output directories\")");
 
     app::ModesOptions modes;
     CLI::App* modesCmd = cli.add_subcommand(
@@ -154,6 +156,26 @@ int main(int argc, char** argv) {
         ->check(oneOf(multibodyNames));
     modesCmd->add_flag("--json", modes.json, "print exactly one JSON object on stdout");
     addCommonOptions(modesCmd, modes, "write modes.csv and modes.json into this directory");
+
+    app::StudyOptions study;
+    CLI::App* studyCmd = cli.add_subcommand(
+        "study", "a parameter study: the points of a study file's [vary] table, sharded and resumable "
+                 "(README \"Parameter studies\")");
+    studyCmd->add_option("study", study.study, "study file (TOML)")->required()->check(CLI::ExistingFile);
+    studyCmd->add_option("--out", study.outDir, "write study.csv and study.json into this directory")->required();
+    studyCmd->add_option("--shard", study.shard, "K/N: run the points i with i mod N = K-1 (merge the shards with "
+                                                 "rockroll merge)")
+        ->capture_default_str();
+    studyCmd->add_option("--jobs", study.jobs, "points in parallel (default: one per core)")->check(inRange(jobsRange, ""));
+    studyCmd->add_flag("--resume", study.resume, "continue the interrupted study whose journal is in --out DIR.partial");
+    studyCmd->add_flag("--force", study.force, "replace an existing non-empty output directory");
+
+    app::MergeOptions merge;
+    CLI::App* mergeCmd = cli.add_subcommand("merge", "merge the shard directories of one study into study.csv and study.json");
+    mergeCmd->add_option("dirs", merge.dirs, "shard output directories")->required();
+    mergeCmd->add_option("--out", merge.outDir, "write the merged study.csv and study.json into this directory")
+        ->required();
+    mergeCmd->add_flag("--force", merge.force, "replace an existing non-empty output directory");
 
     app::ValidateOptions validate;
     CLI::App* validateCmd = cli.add_subcommand("validate", "regenerate results/: REPORT.md, CSV data and plots");
@@ -197,6 +219,8 @@ int main(int argc, char** argv) {
         if (modesCmd->parsed()) return app::modesCommand(modes);
         if (validateCmd->parsed()) return app::validateCommand(validate);
         if (plotCmd->parsed()) return app::plotCommand(plot);
+        if (studyCmd->parsed()) return app::studyCommand(study);
+        if (mergeCmd->parsed()) return app::mergeCommand(merge);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

@@ -31,11 +31,18 @@ std::vector<double> getSweepSpeeds(const SweepSpec& s) {
     return v;
 }
 
-std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint) {
-    std::vector<SweepPoint> out;
-    RunStart next;  // rest
-    std::vector<double> staticReference;
-    for (double mph : getSweepSpeeds(spec)) {
+namespace {
+/// One sweep from its `done` points on; onPoint(point, index in the sweep).
+std::vector<SweepPoint> continueSweep(const SweepSpec& spec, std::vector<SweepPoint> done,
+                                      const std::function<void(const SweepPoint&, size_t)>& onPoint) {
+    const std::vector<double> speeds = getSweepSpeeds(spec);
+    if (done.size() > speeds.size())
+        throw std::logic_error(fmt::format("continueSweep: {} points done of a sweep of {}", done.size(), speeds.size()));
+    std::vector<SweepPoint> out = std::move(done);
+    RunStart next = out.empty() ? RunStart{} : out.back().next;  // rest, or where the last point left the car
+    std::vector<double> staticReference = next.staticReference;
+    for (size_t k = out.size(); k < speeds.size(); ++k) {
+        const double mph = speeds[k];
         Scenario sc = spec.scenario;
         sc.speed = mph * units::mph;
         SweepPoint p;
@@ -65,27 +72,52 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void
             p.error = "an error that is not a std::exception";
             next = RunStart{};
         }
+        p.next = next;
+        p.next.staticReference = staticReference;
         out.push_back(p);
-        if (onPoint) onPoint(out.back());
+        if (onPoint) onPoint(out.back(), k);
     }
     return out;
 }
+}  // namespace
 
-std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
-                                               const std::function<void(const SweepPoint&)>& onPoint) {
-    for (const auto& spec : specs) {  // a scenario error is bad input, found before any thread starts
+void checkSweepSpecs(const std::vector<SweepSpec>& specs) {
+    for (const auto& spec : specs) {
         checkScenario(spec.scenario);
         checkSwitchesApply(spec.scenario);
         getSweepSpeeds(spec);
     }
+}
+
+std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint) {
+    return continueSweep(spec, {}, [&onPoint](const SweepPoint& p, size_t) {
+        if (onPoint) onPoint(p);
+    });
+}
+
+std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
+                                               const std::function<void(const SweepPoint&)>& onPoint) {
+    return runSweepsFrom(specs, jobs, {}, [&onPoint](const SweepPoint& p, size_t, size_t) {
+        if (onPoint) onPoint(p);
+    });
+}
+
+std::vector<std::vector<SweepPoint>> runSweepsFrom(
+    const std::vector<SweepSpec>& specs, int jobs, const std::vector<std::vector<SweepPoint>>& done,
+    const std::function<void(const SweepPoint&, size_t sweep, size_t index)>& onPoint) {
+    checkSweepSpecs(specs);  // a scenario error is bad input, found before any thread starts
+    if (!done.empty() && done.size() != specs.size())
+        throw std::logic_error("runSweepsFrom: expected one list of done points per sweep");
     std::vector<std::vector<SweepPoint>> results(specs.size());
     std::mutex callback;
-    auto report = [&](const SweepPoint& p) {
-        if (!onPoint) return;
-        std::lock_guard<std::mutex> lock(callback);
-        onPoint(p);
-    };
-    parallelFor(specs.size(), std::max(1, jobs), [&](size_t i) { results[i] = runSweep(specs[i], report); });
+    parallelFor(specs.size(), std::max(1, jobs), [&](size_t i) {
+        results[i] = continueSweep(specs[i], done.empty() ? std::vector<SweepPoint>{} : done[i],
+                                   [&](const SweepPoint& p, size_t k) {
+                                       if (!onPoint) return;
+                                       std::lock_guard<std::mutex> lock(callback);
+                                       onPoint(p, i, k);
+                                   });
+    });
     return results;
 }
 

@@ -29,6 +29,9 @@ struct SweepPoint {
     bool failed = false;
     std::string error;       ///< the numerical failure, when failed
     RunSummary summary;      ///< valid unless failed
+    /// Where the sweep's next speed starts after this one (rest after a failure, a
+    /// derailment or with `fresh`): what a resumed sweep continues from (app/Journal.h).
+    RunStart next;
 };
 
 /// The most speeds one sweep visits (so that a tiny --step-mph is refused, not run for days).
@@ -38,6 +41,10 @@ inline constexpr double kMaxSweepSpeeds = 10000;
 /// ScenarioError when an end speed is outside run.speed's range, the step is not
 /// positive, the ends are reversed or there would be more than kMaxSweepSpeeds.
 std::vector<double> getSweepSpeeds(const SweepSpec& spec);
+
+/// ScenarioError for a sweep that cannot run (its scenario, switches or speeds): bad
+/// input, found before anything runs (runSweeps and runSweepsFrom call it first).
+void checkSweepSpecs(const std::vector<SweepSpec>& specs);
 
 /// One sweep. onPoint is called after every speed (from this thread).
 std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint = {});
@@ -60,5 +67,13 @@ SweepJump findSweepJump(const std::vector<SweepPoint>& points, SweepDirection di
 /// Several sweeps on up to `jobs` threads; results in the order of `specs`.
 std::vector<std::vector<SweepPoint>> runSweeps(const std::vector<SweepSpec>& specs, int jobs,
                                                const std::function<void(const SweepPoint&)>& onPoint = {});
+
+/// runSweeps for a resumed batch: `done` (one list per spec, each maybe empty) holds
+/// each sweep's first points, already run; every sweep continues from its last done
+/// point's `next`, exactly as it would have gone on. onPoint gets each new point with
+/// its sweep's index in `specs` and its own index in that sweep (under a lock).
+std::vector<std::vector<SweepPoint>> runSweepsFrom(
+    const std::vector<SweepSpec>& specs, int jobs, const std::vector<std::vector<SweepPoint>>& done,
+    const std::function<void(const SweepPoint&, size_t sweep, size_t index)>& onPoint);
 
 }  // namespace rockroll

@@ -150,7 +150,7 @@ Outcome runRockroll(const fs::path& dir, const std::string& args, bool parseOnly
     return o;
 }
 
-const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot"};
+const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot", "study", "merge"};
 
 bool has(const std::vector<std::string>& t, const std::string& w) { return std::find(t.begin(), t.end(), w) != t.end(); }
 
