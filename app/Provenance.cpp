@@ -4,7 +4,6 @@
 #include "app/BuildInfo.h"
 
 #include <fmt/format.h>
-#include <fstream>
 
 namespace rockroll::app {
 
@@ -71,11 +70,10 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
 Scenario loadScenarioFromSummary(const std::string& path) { return loadScenarioFromSummaryWithOverrides(path, {}); }
 
 Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
-    std::ifstream in(path);
-    if (!in) throw ScenarioError(fmt::format("{}: cannot open summary file", path));
+    const std::string text = readInputFile(path, "summary file");
     nlohmann::json j;
     try {
-        in >> j;
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
         throw ScenarioError(fmt::format("{}: not a JSON summary: {}", path, e.what()));
     }

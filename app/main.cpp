@@ -2,6 +2,7 @@
 #include "app/Commands.h"
 #include "app/Output.h"
 #include "app/Provenance.h"
+#include "mbmodel/DataFiles.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
@@ -195,11 +196,17 @@ int main(int argc, char** argv) {
     } catch (const NumericalFailure& e) {
         fmt::print(stderr, "rockroll: numerical failure: {}\n", e.what());
         return app::kExitNumericalFailure;
+    } catch (const app::OutputError& e) {
+        fmt::print(stderr, "rockroll: cannot write the output: {}\n", e.what());
+        return app::kExitBadInput;
     } catch (const std::filesystem::filesystem_error& e) {
         fmt::print(stderr, "rockroll: cannot write the output: {}\n", e.what());
         return app::kExitBadInput;
     } catch (const std::invalid_argument& e) {
         fmt::print(stderr, "rockroll: bad input: {}\n", e.what());
+        return app::kExitBadInput;
+    } catch (const DataFileError& e) {
+        fmt::print(stderr, "rockroll: data file error: {}\n", e.what());
         return app::kExitBadInput;
     } catch (const std::bad_alloc&) {
         fmt::print(stderr, "rockroll: out of memory (lower ROCKROLL_MAX_MEMORY_MB, the duration or the output rate)\n");

@@ -15,6 +15,8 @@
 // the table repeats end to end with period (last − first distance); its last row
 // must then equal its first.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,7 +54,13 @@ inline constexpr const char* kDefaultTaperText = "20 ft";
 /// cell a finite number. left and right are rail-top heights, positive up. The rows are
 /// placed so the table starts at s = 0 (at s = taper when its first row is not level, so
 /// its taper starts at 0). std::invalid_argument naming the line and column otherwise,
-/// or when alignment is not zero (the models take vertical rail input only).
+/// or when alignment is not zero (the models take vertical rail input only), or when the
+/// text is larger than kMaxTrackFileBytes or has more than kMaxTrackRows data rows.
+/// Input size limits of a measured track (README.md, "Input size limits"): its CSV's bytes
+/// and its data rows; readTrackCsv refuses more (a 1,000,000-row table at 1 ft spacing is 189 miles).
+inline constexpr std::uintmax_t kMaxTrackFileBytes = std::uintmax_t(64) << 20;
+inline constexpr size_t kMaxTrackRows = 1'000'000;
+
 std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::string& source, double taper);
 
 /// Distance the car has travelled along the track, s(t). A run at constant
