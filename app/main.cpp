@@ -167,7 +167,8 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(inRange(wheelLoadLimitRange, ""));
 
     cli.footer("Exit codes (no others): 0 ok; 2 bad input: scenario file (and line), key or option, value and the "
-               "accepted range, or an output that cannot be written; 3 numerical failure (integrator failure, step "
+               "accepted range, an input file over its size limit, an output that cannot be written, or a data "
+               "file that is missing or unreadable; 3 numerical failure (integrator failure, step "
                "limit, runaway state, wall-time limit) with time and state, or any other failure of the computation; "
                "4 a sweep or study finished with failed points (each reported); 5 the car derailed or overturned (run "
                "stopped, history kept); 130 interrupted (SIGINT or SIGTERM).\n"
