@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fmt/ranges.h>
@@ -695,11 +696,16 @@ std::string readInputFile(const std::string& path, const char* what, std::uintma
                                         path, what, size, maxBytes, maxBytes >> 20));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ScenarioError(fmt::format("{}: cannot open {}", path, what));
-    std::string text(static_cast<size_t>(std::min(size, maxBytes)), '\0');  // a file that grew is cut and refused below
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<size_t>(in.gcount()));
-    if (in.peek() != std::char_traits<char>::eof())
-        throw ScenarioError(fmt::format("{}: the {} is larger than {} bytes ({} MiB)", path, what, maxBytes, maxBytes >> 20));
+    // Read to the end, not to the size stat gave: a file that grew, or one of /proc (size 0).
+    std::string text;
+    std::array<char, 1 << 16> chunk;
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        text.append(chunk.data(), static_cast<size_t>(in.gcount()));
+        if (text.size() > maxBytes)
+            throw ScenarioError(fmt::format("{}: the {} is larger than {} bytes ({} MiB, README.md, \"Input size "
+                                            "limits\")",
+                                            path, what, maxBytes, maxBytes >> 20));
+    }
     return text;
 }
 
