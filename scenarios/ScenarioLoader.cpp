@@ -399,6 +399,10 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
         const toml::array* arr = m->as_array();
         if (!arr || !arr->is_array_of_tables())
             track.fail("measured", TableReader::describe(*m), "an array of tables [[track.measured]]");
+        if (arr->size() > kMaxTrackRows)
+            track.fail("measured", fmt::format("{} rows", arr->size()),
+                       fmt::format("at most {} rows [[track.measured]] (README.md, \"Input size limits\")",
+                                   kMaxTrackRows));
         for (size_t i = 0; i < arr->size(); ++i) {
             TableReader row(arr->get(i)->as_table(), src, fmt::format("track.measured[{}].", i));
             MeasuredTrackSample sample;
