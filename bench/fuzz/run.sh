@@ -75,7 +75,7 @@ for h in "${harnesses[@]}"; do
   start=$(date +%s.%N)
   set +e
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "build-fuzz/fuzz/$h" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+    "build-fuzz/fuzz/$h" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 \
     -artifact_prefix="$out/crashes/$h/" "$out/corpus/$h" "${seeds[@]}" > "$out/logs/$h.log" 2>&1
   rc=$?
   set -e
