@@ -3,6 +3,7 @@
 # into build-fuzz/) and runs each for RUNS executions (default 1,000,000), seeded from the
 # project's own files (scenarios/, scenarios/cars/, scenarios/tracks/, tests/data/bad/).
 #   bench/fuzz/run.sh [RUNS] [HARNESS...]     e.g. bench/fuzz/run.sh 1000000 fuzz_track_csv
+#   FUZZ_JOBS=2 runs two harnesses at a time; FUZZ_MAX_SECONDS=S stops each after S seconds.
 # Needs Debian's clang and libclang-rt-<version>-dev (fuzzing only; not in build.sh's list).
 # Writes, under build-fuzz/fuzz-out/:
 #   crashes/<harness>/   crash-*, timeout-* (over 10 s), oom-* (over 2 GB) inputs: none expected;
@@ -65,26 +66,39 @@ for path in sys.argv[2:]:
 PY
 
 printf 'harness\texecutions\texec_per_s\tseconds\tresult\n' > "$out/summary.tsv"
-status=0
-for h in "${harnesses[@]}"; do
+fuzz_one() {  # fuzz_one HARNESS: one line of summary.tsv; returns 1 on a finding
+  local h=$1 seeds=() start rc seconds execs rate result
   mkdir -p "$out/crashes/$h" "$out/corpus/$h" "$out/seeds/$h"
-  seeds=()
   [ -n "$(ls -A "$out/seeds/$h")" ] && seeds=("$out/seeds/$h")
   [ ${#seeds[@]} -eq 0 ] && seeds=("$out/seeds/fuzz_scenario_text")  # a harness added later (fuzz_journal): text seeds
   echo "fuzz: $h, $runs runs" >&2
   start=$(date +%s.%N)
-  set +e
+  rc=0
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "build-fuzz/fuzz/$h" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 \
-    -artifact_prefix="$out/crashes/$h/" "$out/corpus/$h" "${seeds[@]}" > "$out/logs/$h.log" 2>&1
-  rc=$?
-  set -e
+    "build-fuzz/fuzz/$h" -runs="$runs" -max_total_time="$max_seconds" -timeout=10 -rss_limit_mb=2048 \
+    -max_len=16384 -print_final_stats=1 -artifact_prefix="$out/crashes/$h/" "$out/corpus/$h" "${seeds[@]}" \
+    > "$out/logs/$h.log" 2>&1 || rc=$?
   seconds=$(awk "BEGIN { print $(date +%s.%N) - $start }")
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$out/logs/$h.log" | grep -o '[0-9]*$' || echo 0)
   rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$out/logs/$h.log" | grep -o '[0-9]*$' || echo 0)
-  if [ "$rc" -eq 0 ]; then result=ok; else result="FOUND (exit $rc): $(ls "$out/crashes/$h" | tr '\n' ' ')"; status=1; fi
+  if [ "$rc" -eq 0 ]; then result=ok; else result="FOUND (exit $rc): $(ls "$out/crashes/$h" | tr '\n' ' ')"; fi
   printf '%s\t%s\t%s\t%.0f\t%s\n' "$h" "$execs" "$rate" "$seconds" "$result" >> "$out/summary.tsv"
   echo "fuzz: $h: $execs executions, $rate exec/s, $result" >&2
+  [ "$rc" -eq 0 ]
+}
+# FUZZ_JOBS harnesses at a time (default 1); FUZZ_MAX_SECONDS caps each (default 0: no cap,
+# RUNS decides; a capped harness reports the executions it reached).
+jobs="${FUZZ_JOBS:-1}" max_seconds="${FUZZ_MAX_SECONDS:-0}"
+status=0
+pids=()
+for h in "${harnesses[@]}"; do
+  fuzz_one "$h" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$jobs" ]; then
+    wait "${pids[0]}" || status=1
+    pids=("${pids[@]:1}")
+  fi
 done
+for p in "${pids[@]}"; do wait "$p" || status=1; done
 column -t -s $'\t' "$out/summary.tsv"
 exit $status
