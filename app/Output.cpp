@@ -78,12 +78,14 @@ void writeAtomically(const fs::path& path, const std::function<void(std::ostream
     addTemporary(tmp);
     {
         std::ofstream out(tmp);
-        if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
+        if (!out) throw OutputError(fmt::format("cannot write {}", tmp.string()));
         write(out);
         out.flush();
-        if (!out) throw std::runtime_error(fmt::format("error while writing {}", tmp.string()));
+        if (!out) throw OutputError(fmt::format("error while writing {}", tmp.string()));
     }
-    fs::rename(tmp, path);
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw OutputError(fmt::format("cannot rename {} to {}: {}", tmp.string(), path.string(), ec.message()));
     dropTemporary(tmp);
 }
 
@@ -156,8 +158,14 @@ OutputDirectory::OutputDirectory(fs::path dir, bool force, std::optional<Journal
     }
     std::lock_guard lock(getTemporariesMutex());
     addTemporary(partial_);
-    fs::remove_all(partial_);  // left by a run that was killed (SIGKILL) before it could clean up
-    fs::create_directories(partial_);
+    try {
+        fs::remove_all(partial_);  // left by a run that was killed (SIGKILL) before it could clean up
+        fs::create_directories(partial_);
+    } catch (const fs::filesystem_error& e) {
+        throw OutputError(fmt::format("{} {}: cannot create the directory {}: {}; expected a path in a writable "
+                                      "directory",
+                                      flag, dir_.string(), partial_.string(), e.code().message()));
+    }
 }
 
 void OutputDirectory::keepPartial() {

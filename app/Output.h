@@ -12,13 +12,22 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace rockroll::app {
 
+/// An output that cannot be written (a path under a file, no permission, a full disk):
+/// exit 2 at the command line (README, Exit codes), its message naming the path.
+class OutputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 /// Writes through a temporary name and renames when complete, so a reader never
-/// sees a half-written file. The temporary is removed on SIGINT/SIGTERM.
+/// sees a half-written file. The temporary is removed on SIGINT/SIGTERM. OutputError
+/// when the file cannot be written.
 void writeAtomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
 /// The history as CSV (mbmodel/CsvWriter): every channel, or only `columns` in
@@ -41,7 +50,8 @@ void installInterruptHandler();
 
 /// An output directory that appears complete or not at all. The constructor checks
 /// `dir` (an existing non-empty directory needs `force`; otherwise ScenarioError, naming
-/// `flag` and the directory: bad input, exit 2) and creates `dir`.partial, where every
+/// `flag` and the directory: bad input, exit 2) and creates `dir`.partial (OutputError naming
+/// `flag` and the path when it cannot), where every
 /// file goes; commit() renames it to `dir` (replacing the old directory with `force`).
 /// Until then an exception (destructor) or SIGINT/SIGTERM (installInterruptHandler)
 /// removes `dir`.partial, and `dir` is left as it was.

@@ -4,7 +4,6 @@
 #include "app/BuildInfo.h"
 
 #include <fmt/format.h>
-#include <fstream>
 
 namespace rockroll::app {
 
@@ -71,11 +70,10 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
 Scenario loadScenarioFromSummary(const std::string& path) { return loadScenarioFromSummaryWithOverrides(path, {}); }
 
 Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
-    std::ifstream in(path);
-    if (!in) throw ScenarioError(fmt::format("{}: cannot open summary file", path));
+    const std::string text = readInputFile(path, "summary file");
     nlohmann::json j;
     try {
-        in >> j;
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
         throw ScenarioError(fmt::format("{}: not a JSON summary: {}", path, e.what()));
     }
@@ -84,19 +82,37 @@ Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std
         throw ScenarioError(fmt::format("{}: key 'provenance.scenario_toml' is missing: expected a summary.json "
                                         "written by `rockroll run` (version 0.9 or later)",
                                         path));
+    // A value as the messages show it: a string or a number as written, anything else by its
+    // kind (a deeply nested array would otherwise be printed, or recursed into, whole).
+    auto show = [](const nlohmann::json& v) {
+        return v.is_string() || v.is_number() || v.is_boolean() || v.is_null() ? v.dump(-1, ' ', false,
+                                                                                        nlohmann::json::error_handler_t::replace)
+                                                                              : std::string("a JSON ") + v.type_name();
+    };
     if (j.contains("start") && j["start"] != "rest")
         throw ScenarioError(fmt::format("{}: key 'start' = {}: expected \"rest\"; this point continued a speed sweep "
                                         "from the previous speed's state, so rerun the sweep instead",
-                                        path, j["start"].dump()));
+                                        path, show(j["start"])));
+    auto getText = [&](const char* key, const std::string& fallback) {
+        if (!prov->contains(key)) return fallback;
+        const nlohmann::json& v = (*prov)[key];
+        if (!v.is_string())
+            throw ScenarioError(fmt::format("{}: key 'provenance.{}' = {}: expected a string", path, key, show(v)));
+        return v.get<std::string>();
+    };
     Scenario sc =
         parseScenario((*prov)["scenario_toml"].get<std::string>(), path + " (provenance.scenario_toml)", overrides);
     const auto applied = sc.overrides;  // the new ones, recorded after the summary's own
-    sc.sourceSha256 = (*prov).value("scenario_sha256", "");
-    sc.source = (*prov).value("scenario_file", path);
+    sc.sourceSha256 = getText("scenario_sha256", "");
+    sc.source = getText("scenario_file", path);
     sc.carOverrides.clear();
     if (prov->contains("car_overrides") && (*prov)["car_overrides"].is_object())
-        for (const auto& [key, text] : (*prov)["car_overrides"].items())
-            sc.carOverrides.emplace_back(key, text.is_string() ? text.get<std::string>() : text.dump());
+        for (const auto& [key, text] : (*prov)["car_overrides"].items()) {
+            if (text.is_structured())
+                throw ScenarioError(fmt::format("{}: key 'provenance.car_overrides.{}' = {}: expected the value's text",
+                                                path, key, show(text)));
+            sc.carOverrides.emplace_back(key, text.is_string() ? text.get<std::string>() : show(text));
+        }
     sc.overrides.clear();
     if (prov->contains("overrides") && (*prov)["overrides"].is_array())
         for (const auto& o : (*prov)["overrides"])

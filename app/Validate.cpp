@@ -8,10 +8,13 @@
 #include "app/ValidateSections.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <functional>
+#include <stdexcept>
+#include <string_view>
 #include <thread>
 
 namespace rockroll::app {
@@ -73,6 +76,9 @@ int validateCommand(const ValidateOptions& o) {
     std::vector<std::string> failedSections;
     auto section = [&](const char* name, const std::function<std::string()>& make) -> std::string {
         try {
+            // Test hook (tests/test_Validate.cpp): this section fails as a section's error would.
+            if (const char* fail = std::getenv("ROCKROLL_VALIDATE_FAIL_SECTION"); fail && std::string_view(fail) == name)
+                throw std::runtime_error("injected failure (ROCKROLL_VALIDATE_FAIL_SECTION)");
             return make();
         } catch (const std::exception& e) {
             failedSections.push_back(fmt::format("{}: {}", name, e.what()));

@@ -3,6 +3,7 @@
 #include "app/Output.h"
 #include "app/PlotCommand.h"
 #include "app/Provenance.h"
+#include "mbmodel/DataFiles.h"
 #include "mbmodel/Simulation.h"
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
@@ -196,7 +197,8 @@ int main(int argc, char** argv) {
     plotCmd->add_flag("--force", plot.force, "replace an existing non-empty DIR/plots");
 
     cli.footer("Exit codes (no others): 0 ok; 2 bad input: scenario file (and line), key or option, value and the "
-               "accepted range, or an output that cannot be written; 3 numerical failure (integrator failure, step "
+               "accepted range, an input file over its size limit, an output that cannot be written, or a data "
+               "file that is missing or unreadable; 3 numerical failure (integrator failure, step "
                "limit, runaway state, wall-time limit) with time and state, or any other failure of the computation; "
                "4 a sweep or study finished with failed points (each reported); 5 the car derailed or overturned (run "
                "stopped, history kept); 130 interrupted (SIGINT or SIGTERM).\n"
@@ -228,11 +230,17 @@ int main(int argc, char** argv) {
     } catch (const NumericalFailure& e) {
         fmt::print(stderr, "rockroll: numerical failure: {}\n", e.what());
         return app::kExitNumericalFailure;
+    } catch (const app::OutputError& e) {
+        fmt::print(stderr, "rockroll: cannot write the output: {}\n", e.what());
+        return app::kExitBadInput;
     } catch (const std::filesystem::filesystem_error& e) {
         fmt::print(stderr, "rockroll: cannot write the output: {}\n", e.what());
         return app::kExitBadInput;
     } catch (const std::invalid_argument& e) {
         fmt::print(stderr, "rockroll: bad input: {}\n", e.what());
+        return app::kExitBadInput;
+    } catch (const DataFileError& e) {
+        fmt::print(stderr, "rockroll: data file error: {}\n", e.what());
         return app::kExitBadInput;
     } catch (const std::bad_alloc&) {
         fmt::print(stderr, "rockroll: out of memory (lower ROCKROLL_MAX_MEMORY_MB, the duration or the output rate)\n");

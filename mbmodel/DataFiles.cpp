@@ -28,7 +28,7 @@ fs::path findDataFile(const fs::path& relative) {
         if (fs::is_regular_file(p)) return p;
         tried.push_back(p.string());
     }
-    throw std::runtime_error(fmt::format("{} is in none of: {} (set ROCKROLL_DATA_DIR to the folder that holds it)",
+    throw DataFileError(fmt::format("{} is in none of: {} (set ROCKROLL_DATA_DIR to the folder that holds it)",
                                          relative.string(), fmt::join(tried, ", ")));
 }
 

@@ -3,6 +3,7 @@
 // scenarios, the plotting package python/rockroll_plots): an installed program in its own prefix,
 // a build-tree program in the source tree it was configured from. No Simbody.
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 namespace rockroll {
@@ -17,7 +18,14 @@ namespace rockroll {
 ///     tree that moved after configuring).
 std::vector<std::filesystem::path> getDataDirs();
 
-/// The first data folder holding `relative`; std::runtime_error naming every path tried
+/// A shipped data file that is missing or cannot be read (the install, ROCKROLL_DATA_DIR,
+/// ROCKROLL_MIT1976): bad input, exit 2 at the command line (README, Exit codes).
+class DataFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The first data folder holding `relative`; DataFileError naming every path tried
 /// when none does.
 std::filesystem::path findDataFile(const std::filesystem::path& relative);
 

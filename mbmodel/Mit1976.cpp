@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 [[noreturn]] void fail(const fs::path& file, const std::string& key, const std::string& what) {
-    throw std::runtime_error(fmt::format("{}: {}: {}", file.string(), key, what));
+    throw DataFileError(fmt::format("{}: {}: {}", file.string(), key, what));
 }
 
 std::string getString(const fs::path& file, const std::string& key, const toml::table& t, const char* name,
@@ -37,7 +37,7 @@ Mit1976::Mit1976(const fs::path& file) : file_(file) {
     try {
         root = toml::parse_file(file.string());
     } catch (const toml::parse_error& e) {
-        throw std::runtime_error(fmt::format("{}: {} (line {})", file.string(), std::string(e.description()),
+        throw DataFileError(fmt::format("{}: {} (line {})", file.string(), std::string(e.description()),
                                              e.source().begin.line));
     }
     // Walks the file: { value, unit, source, page } tables are numbers, { text, source, page }
@@ -84,15 +84,15 @@ Mit1976::Mit1976(const fs::path& file) : file_(file) {
 
 const PublishedValue& Mit1976::value(const std::string& key, std::string_view unit) const {
     const auto it = values_.find(key);
-    if (it == values_.end()) throw std::runtime_error(fmt::format("{}: no published value \"{}\"", file_.string(), key));
+    if (it == values_.end()) throw DataFileError(fmt::format("{}: no published value \"{}\"", file_.string(), key));
     if (it->second.unit != unit)
-        throw std::runtime_error(fmt::format("{}: {} is in {}, asked for in {}", file_.string(), key, it->second.unit, unit));
+        throw DataFileError(fmt::format("{}: {} is in {}, asked for in {}", file_.string(), key, it->second.unit, unit));
     return it->second;
 }
 
 const std::string& Mit1976::text(const std::string& key) const {
     const auto it = texts_.find(key);
-    if (it == texts_.end()) throw std::runtime_error(fmt::format("{}: no text \"{}\"", file_.string(), key));
+    if (it == texts_.end()) throw DataFileError(fmt::format("{}: no text \"{}\"", file_.string(), key));
     return it->second;
 }
 
@@ -114,7 +114,7 @@ fs::path Mit1976::findFile() {
         if (fs::is_regular_file(p)) return p;
         tried.push_back(p.string());
     }
-    throw std::runtime_error(fmt::format("the 1976 report's numbers (mit1976.toml) are in none of: {}", fmt::join(tried, ", ")));
+    throw DataFileError(fmt::format("the 1976 report's numbers (mit1976.toml) are in none of: {}", fmt::join(tried, ", ")));
 }
 
 const Mit1976& Mit1976::get() {

@@ -4,6 +4,8 @@
 // one data file scenarios/reference/mit1976.toml. Every number there carries its
 // unit and its source (table or figure, and page); nothing published is a C++
 // literal. Keys are dotted paths, arrays of tables indexed: "table3[1].max_roll".
+#include "mbmodel/DataFiles.h"
+
 #include <cstddef>
 #include <filesystem>
 #include <map>

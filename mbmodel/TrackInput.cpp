@@ -72,6 +72,9 @@ std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::
     std::vector<std::string> headers;
     std::vector<MeasuredTrackSample> rows;
     std::vector<int> rowLines;
+    if (text.size() > kMaxTrackFileBytes)
+        throw std::invalid_argument(fmt::format("{}: {} bytes; expected at most {} bytes ({} MiB) of track CSV",
+                                                source, text.size(), kMaxTrackFileBytes, kMaxTrackFileBytes >> 20));
     std::istringstream in{std::string(text)};
     int lineNo = 0;
     for (std::string raw; std::getline(in, raw);) {
@@ -141,6 +144,10 @@ std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::
                                            "more than the row before (line {})",
                                            c + 1, headers[c], cells[c], rowLines.back()));
         }
+        if (rows.size() == kMaxTrackRows)
+            throw fail(lineNo, fmt::format("more than {} data rows; expected at most {} (README.md, \"Input size "
+                                           "limits\")",
+                                           kMaxTrackRows, kMaxTrackRows));
         MeasuredTrackSample m;
         m.distance = value[Distance];
         m.crossLevel = value[Right] - value[Left];

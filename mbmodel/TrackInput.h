@@ -15,6 +15,8 @@
 // the table repeats end to end with period (last − first distance); its last row
 // must then equal its first.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,7 +54,16 @@ inline constexpr const char* kDefaultTaperText = "20 ft";
 /// cell a finite number. left and right are rail-top heights, positive up. The rows are
 /// placed so the table starts at s = 0 (at s = taper when its first row is not level, so
 /// its taper starts at 0). std::invalid_argument naming the line and column otherwise,
-/// or when alignment is not zero (the models take vertical rail input only).
+/// or when alignment is not zero (the models take vertical rail input only), or when the
+/// text is larger than kMaxTrackFileBytes or has more than kMaxTrackRows data rows.
+/// Input size limits of a measured track (README.md, "Input size limits"): its CSV's bytes
+/// and its data rows; readTrackCsv refuses more. 100,000 rows (19 miles at 1 ft spacing) keep
+/// a run's summary.json, whose provenance carries every row for --from-summary, under the
+/// 16 MiB a summary file may have (measured: 9.5 MB, 8 s and 120 MB to run; 1,000,000 rows
+/// gave a 96 MB summary, 74 s and 1 GB).
+inline constexpr std::uintmax_t kMaxTrackFileBytes = std::uintmax_t(16) << 20;
+inline constexpr size_t kMaxTrackRows = 100'000;
+
 std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::string& source, double taper);
 
 /// Distance the car has travelled along the track, s(t). A run at constant

@@ -6,6 +6,8 @@
 #include "scenarios/DefaultScenario.h"
 
 #include <fmt/format.h>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fmt/ranges.h>
@@ -279,13 +281,6 @@ toml::table parseToml(std::string_view text, const std::string& source) {
     }
 }
 
-std::string readFile(const std::string& path, const char* what) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ScenarioError(fmt::format("{}: cannot open {}", path, what));
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
-}
 
 /// A car file: name, description, and [parameters] with every parameter of the
 /// table as { value = "<number> <unit>", source = "<where it comes from>" }.
@@ -393,7 +388,7 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
         const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(src).parent_path() / given;
         std::string text;
         try {
-            text = readFile(path.string(), "track file");
+            text = readInputFile(path.string(), "track file", kMaxTrackFileBytes);
             sc.track.measured = readTrackCsv(text, path.string(), sc.track.taper);
         } catch (const std::exception& e) {
             throw ScenarioError(fmt::format("{}: key 'track.file' = \"{}\": {}", src, given.string(), e.what()));
@@ -404,6 +399,10 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
         const toml::array* arr = m->as_array();
         if (!arr || !arr->is_array_of_tables())
             track.fail("measured", TableReader::describe(*m), "an array of tables [[track.measured]]");
+        if (arr->size() > kMaxTrackRows)
+            track.fail("measured", fmt::format("{} rows", arr->size()),
+                       fmt::format("at most {} rows [[track.measured]] (README.md, \"Input size limits\")",
+                                   kMaxTrackRows));
         for (size_t i = 0; i < arr->size(); ++i) {
             TableReader row(arr->get(i)->as_table(), src, fmt::format("track.measured[{}].", i));
             MeasuredTrackSample sample;
@@ -651,7 +650,7 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
 Scenario loadScenarioFile(const std::string& path) { return loadScenarioFile(path, {}); }
 
 Scenario loadScenarioFile(const std::string& path, const std::vector<ScenarioOverride>& overrides, OverrideKeys mode) {
-    const std::string text = readFile(path, "scenario file");
+    const std::string text = readInputFile(path, "scenario file");
     Scenario sc = parseScenario(text, path, overrides, mode);
     sc.sourceSha256 = calcSha256(text);
     return sc;
@@ -661,7 +660,7 @@ CarParameters parseCarFile(std::string_view text, const std::string& source) {
     return readCarFile(parseToml(text, source), source);
 }
 
-CarParameters loadCarFile(const std::string& path) { return parseCarFile(readFile(path, "car file"), path); }
+CarParameters loadCarFile(const std::string& path) { return parseCarFile(readInputFile(path, "car file"), path); }
 
 std::vector<std::string> getCarNames() {
     std::vector<std::string> names;
@@ -685,6 +684,33 @@ Scenario getDefaultScenario() {
     Scenario sc = parseScenario(kDefaultScenarioToml, "<embedded default: 70ton-loaded.toml>");
     sc.sourceSha256 = calcSha256(kDefaultScenarioToml);
     return sc;
+}
+
+std::string readInputFile(const std::string& path, const char* what, std::uintmax_t maxBytes) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw ScenarioError(fmt::format("{}: cannot open {}", path, what));
+    // A folder, FIFO or device (/dev/zero) would fail late, hang or never end.
+    if (!std::filesystem::is_regular_file(status))
+        throw ScenarioError(fmt::format("{}: cannot open {}: not a regular file", path, what));
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > maxBytes)
+        throw ScenarioError(fmt::format("{}: the {} is {} bytes; expected at most {} bytes ({} MiB, README.md, "
+                                        "\"Input size limits\")",
+                                        path, what, size, maxBytes, maxBytes >> 20));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ScenarioError(fmt::format("{}: cannot open {}", path, what));
+    // Read to the end, not to the size stat gave: a file that grew, or one of /proc (size 0).
+    std::string text;
+    std::array<char, 1 << 16> chunk;
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        text.append(chunk.data(), static_cast<size_t>(in.gcount()));
+        if (text.size() > maxBytes)
+            throw ScenarioError(fmt::format("{}: the {} is larger than {} bytes ({} MiB, README.md, \"Input size "
+                                            "limits\")",
+                                            path, what, maxBytes, maxBytes >> 20));
+    }
+    return text;
 }
 
 std::string calcSha256(std::string_view bytes) {

@@ -11,6 +11,7 @@
 #include "mbmodel/Simulation.h"
 #include "mbmodel/TrackInput.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -129,6 +130,16 @@ CarParameters makeCarParameters(std::string_view carName);
 /// and printed to round-trip exactly, so parseScenario of it rebuilds a
 /// Scenario that runs bit for bit like this one.
 std::string formatScenarioToml(const Scenario& sc);
+
+/// Input size limits (README.md, "Input size limits"): a scenario, car or summary file, and
+/// a measured-track CSV (whose rows mbmodel/TrackInput.h kMaxTrackRows also bounds). Larger
+/// files are refused before they are read, so time and memory stay bounded.
+inline constexpr std::uintmax_t kMaxScenarioFileBytes = std::uintmax_t(16) << 20;
+
+/// The bytes of the regular file `path` (`what` names it in errors: "scenario file"):
+/// ScenarioError when it is missing, not a regular file (a folder, a FIFO, /dev/zero) or
+/// larger than `maxBytes`.
+std::string readInputFile(const std::string& path, const char* what, std::uintmax_t maxBytes = kMaxScenarioFileBytes);
 
 /// SHA-256 of a byte string, lowercase hex.
 std::string calcSha256(std::string_view bytes);

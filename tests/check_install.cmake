@@ -3,6 +3,7 @@
 # alone (a Debug build: NDEBUG and the C++ standard must come from the package), and runs it
 # on the installed 70ton-loaded.toml.
 #   cmake -DBUILD_DIR=build -DSOURCE_DIR=. -DWORK_DIR=build/install_test -P tests/check_install.cmake
+# SANITIZER_FLAGS: the build's -fsanitize flags (sanitize preset), which the example needs to link.
 cmake_minimum_required(VERSION 3.22)
 set(prefix ${WORK_DIR}/prefix)
 set(example ${WORK_DIR}/example)
@@ -36,7 +37,7 @@ endif()
 
 run("configure the example" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cpp -B ${example}
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "-DCMAKE_CXX_FLAGS=${SANITIZER_FLAGS}")
 # rockroll::simbody carries Simbody's NDEBUG and the language standard rockroll was
 # built with (CXX_STANDARD: 20 with the patched Release Simbody; 17 with Debian's
 # unpatched headers, which do not compile as C++20, simbody#710).

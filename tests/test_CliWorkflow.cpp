@@ -244,6 +244,43 @@ TEST(CliWorkflow, ExistingNonEmptyDirectoryNeedsForce) {
     EXPECT_TRUE(fs::exists(dir / "empty" / "summary.json"));
 }
 
+// An output that cannot be written is bad input, exit 2 (README, Exit codes), for every
+// command with --out, before anything is computed; the message names the flag and the path.
+TEST(CliWorkflow, AnOutputThatCannotBeWrittenExits2) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    std::ofstream(dir / "afile") << "a file, not a directory\n";
+    for (const std::string& args :
+         {"run '" + kScenario + "' --model halfcar --duration-s 0.2 --out afile/res",
+          "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 15 --step-mph 1 --duration-s 1 --out afile/res",
+          "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none --out afile/res",
+          "modes '" + kScenario + "' --model halfcar --out afile/res"}) {
+        SCOPED_TRACE(args);
+        const Outcome o = runCli(dir, args);
+        EXPECT_EQ(o.exitCode, 2) << o.err;
+        EXPECT_NE(o.err.find("cannot write the output: --out afile/res: cannot create the directory afile/res.partial"),
+                  std::string::npos)
+            << o.err;
+        EXPECT_EQ(o.out, "");
+    }
+    EXPECT_EQ(readText(dir / "afile"), "a file, not a directory\n");
+}
+
+// A shipped data file that cannot be read (here the report's numbers, mit1976.toml, through
+// ROCKROLL_MIT1976) is bad input, exit 2, naming the file and the line; a missing one is the
+// same error class (mbmodel/DataFiles.h DataFileError; tests/test_DataFiles.cpp).
+TEST(CliWorkflow, ABrokenDataFileExits2) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    std::ofstream(dir / "mit1976.toml") << "[report]\nyear = { value = 1976, unit = \"\"\n";
+    const std::string cmd = "cd '" + dir.string() + "' && ROCKROLL_MIT1976='" + (dir / "mit1976.toml").string() +
+                            "' '" + ROCKROLL_BIN + "' validate --quick --out out > stdout.txt 2> stderr.txt";
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    const std::string err = readText(dir / "stderr.txt");
+    EXPECT_NE(err.find("rockroll: data file error: " + (dir / "mit1976.toml").string() + ": "), std::string::npos) << err;
+    EXPECT_NE(err.find("(line 2)"), std::string::npos) << err;
+}
+
 // A run interrupted while it computes: exit 130, its DIR.partial removed, DIR never created.
 TEST(CliWorkflow, InterruptLeavesNothingHalfWritten) {
     for (int sig : {SIGINT, SIGTERM}) {

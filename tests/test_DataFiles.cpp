@@ -49,7 +49,7 @@ TEST(DataFiles, AMissingFileNamesEveryPathTried) {
     try {
         findDataFile("scenarios/no-such-car.toml");
         FAIL() << "no error";
-    } catch (const std::runtime_error& e) {
+    } catch (const DataFileError& e) {  // exit 2 at the command line (app/main.cpp)
         const std::string what = e.what();
         for (const auto& dir : getDataDirs())
             EXPECT_NE(what.find((dir / "scenarios/no-such-car.toml").string()), std::string::npos) << what;

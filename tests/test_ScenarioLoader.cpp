@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <regex>
@@ -163,4 +164,41 @@ TEST(ScenarioLoader, EveryDeclaredRangeIsInTheReadme) {
         if (r.key.rfind("car.", 0) == 0) continue;  // the car's parameters: finite and ≥ 0 (README says so)
         EXPECT_NE(readme.find("| `" + r.key + "` | " + r.describe() + " |"), std::string::npos) << r.key;
     }
+}
+
+// Input size limits (README.md, "Input size limits"): a track file over kMaxTrackFileBytes
+// (a sparse 100 MB file here) and a scenario file over kMaxScenarioFileBytes are refused
+// before they are read; a device or a folder named as a track file is refused, not read
+// for ever (/dev/zero) or half-read.
+TEST(ScenarioLoader, FilesOverTheSizeLimitsOrNotRegularAreRefused) {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::makeTestTempDir();
+    auto loadError = [](const fs::path& p) -> std::string {
+        try {
+            loadScenarioFile(p.string());
+        } catch (const ScenarioError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    auto withTrackFile = [&](const std::string& name, const std::string& file) {
+        const fs::path p = dir / name;
+        std::ofstream(p) << test_cases::replaceOnce(kGood, "amplitude = \"0.75 in\"\n", "file = \"" + file + "\"\n");
+        return p;
+    };
+    std::ofstream(dir / "huge.csv") << "distance [m], left [m], right [m]\n";
+    fs::resize_file(dir / "huge.csv", 100'000'000);
+    const std::string huge = loadError(withTrackFile("huge.toml", "huge.csv"));
+    EXPECT_NE(huge.find("key 'track.file' = \"huge.csv\""), std::string::npos) << huge;
+    EXPECT_NE(huge.find("the track file is 100000000 bytes; expected at most 16777216 bytes (16 MiB"), std::string::npos)
+        << huge;
+    for (const std::string& notFile : {std::string("/dev/zero"), dir.string()}) {
+        const std::string e = loadError(withTrackFile("device.toml", notFile));
+        EXPECT_NE(e.find(notFile + ": cannot open track file: not a regular file"), std::string::npos) << e;
+    }
+    std::ofstream(dir / "big.toml") << kGood;
+    fs::resize_file(dir / "big.toml", kMaxScenarioFileBytes + 1);
+    const std::string big = loadError(dir / "big.toml");
+    EXPECT_NE(big.find("the scenario file is 16777217 bytes; expected at most 16777216 bytes (16 MiB"), std::string::npos)
+        << big;
 }

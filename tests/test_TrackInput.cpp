@@ -173,3 +173,21 @@ TEST(TrackInput, CsvErrorsNameLineAndColumn) {
         EXPECT_NE(e.find(c.expect), std::string::npos) << e;
     }
 }
+
+// Input size limits (README.md, "Input size limits"): a table of kMaxTrackRows rows reads,
+// one more row is refused naming its line; text over kMaxTrackFileBytes is refused unread.
+TEST(TrackInput, TablesOverTheSizeLimitsAreRefused) {
+    std::string csv = "distance [m], left [m], right [m]\n";
+    csv.reserve(kMaxTrackRows * 16);
+    for (size_t i = 0; i < kMaxTrackRows; ++i) csv += std::to_string(i) + ",0,0\n";
+    EXPECT_EQ(readTrackCsv(csv, "t.csv", 1.0).size(), kMaxTrackRows);
+    csv += std::to_string(kMaxTrackRows) + ",0,0\n";
+    const std::string rowError = csvError(csv);
+    EXPECT_NE(rowError.find("t.csv:" + std::to_string(kMaxTrackRows + 2) + ": more than 100000 data rows"),
+              std::string::npos)
+        << rowError;
+    const std::string big(kMaxTrackFileBytes + 1, '#');
+    const std::string sizeError = csvError(big);
+    EXPECT_NE(sizeError.find("t.csv: 16777217 bytes; expected at most 16777216 bytes (16 MiB)"), std::string::npos)
+        << sizeError;
+}

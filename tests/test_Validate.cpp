@@ -17,6 +17,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <sys/wait.h>
 #include <tuple>
 
 namespace {
@@ -271,6 +272,33 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     EXPECT_EQ(n.csvs, 11);
     EXPECT_EQ(n.pngs, 14);
     EXPECT_EQ(n.jsons, n.pngs + 1);
+}
+
+// A section that fails is reported with its error (stderr, REPORT.md, validation.json),
+// the sections after it still run, and validate exits 4 (README, Exit codes). The
+// failure is injected through ROCKROLL_VALIDATE_FAIL_SECTION (app/Validate.cpp).
+TEST(Validate, AFailedSectionIsReportedAndTheOthersStillRun) {
+    const fs::path dir = rockroll::test::makeTestTempDir(), out = dir / "out";
+    const std::string cmd = "ROCKROLL_VALIDATE_FAIL_SECTION='time histories' " + std::string(ROCKROLL_BIN) +
+                            " validate --quick --out '" + out.string() + "' > /dev/null 2> '" +
+                            (dir / "stderr.txt").string() + "'";
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 4);
+    const std::string err = readFile((dir / "stderr.txt").string());
+    EXPECT_NE(err.find("section \"time histories\" FAILED: injected failure"), std::string::npos) << err;
+    EXPECT_NE(err.find("1 section(s) failed: time histories: injected failure"), std::string::npos) << err;
+    const std::string report = readFile((out / "REPORT.md").string());
+    EXPECT_NE(report.find("## time histories\n\n**This section failed:** injected failure"), std::string::npos);
+    // The others ran and wrote their tables.
+    for (const char* section : {"Roll against speed", "Table 3", "Table 4", "Describing-function", "Modes",
+                                "Convergence", "degrees of freedom", "criteria", "Attribution"})
+        EXPECT_NE(report.find(section), std::string::npos) << section;
+    EXPECT_TRUE(fs::exists(out / "sweep_70ton-loaded_0.75in_reduced.csv"));
+    const nlohmann::json meta = nlohmann::json::parse(readFile((out / "validation.json").string()));
+    ASSERT_TRUE(meta.contains("failed_sections")) << meta.dump();
+    ASSERT_EQ(meta["failed_sections"].size(), 1u);
+    EXPECT_NE(meta["failed_sections"][0].get<std::string>().find("time histories: injected failure"), std::string::npos);
 }
 
 // The committed results/ read back as the quick run's do (results/ is regenerated

@@ -10,6 +10,8 @@ from .figures import plot_csv, read_csv, read_json, save
 def plot_time_histories(out, meta):
     runs = {t["model"]: (t["file"], read_csv(os.path.join(out, t["file"]))[1]) for t in meta.get("timehistories", [])}
     models = [m for m in ("fullcar", "halfcar", "reduced") if m in runs]
+    if not models:  # the time-history section failed (reported in REPORT.md): nothing to draw
+        return
     fig, axes = plt.subplots(5, len(models), figsize=(5 * len(models), 13), sharex=True, squeeze=False)
     for j, m in enumerate(models):
         f, r = runs[m]
