@@ -76,7 +76,7 @@ int validateCommand(const ValidateOptions& o) {
     std::vector<std::string> failedSections;
     auto section = [&](const char* name, const std::function<std::string()>& make) -> std::string {
         try {
-            // Test hook (tests/test_Validate.cpp): this section fails as a section's error would.
+            // Test hook (app/test/test_Validate.cpp): this section fails as a section's error would.
             if (const char* fail = std::getenv("ROCKROLL_VALIDATE_FAIL_SECTION"); fail && std::string_view(fail) == name)
                 throw std::runtime_error("injected failure (ROCKROLL_VALIDATE_FAIL_SECTION)");
             return make();

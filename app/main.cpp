@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
         // --help and --version exit 0; every command-line error is bad input.
         return cli.exit(e) == 0 ? app::kExitOk : app::kExitBadInput;
     }
-    // ROCKROLL_PARSE_ONLY=1: check the command line and exit 0 without running (tests/test_DocCommands.cpp).
+    // ROCKROLL_PARSE_ONLY=1: check the command line and exit 0 without running (app/test/test_DocCommands.cpp).
     if (const char* parseOnly = std::getenv("ROCKROLL_PARSE_ONLY"); parseOnly && std::string(parseOnly) == "1") return 0;
     try {
         if (runCmd->parsed()) return app::runCommand(run);

@@ -1,6 +1,6 @@
 #pragma once
 // What each libFuzzer harness (bench/fuzz/fuzz_<reader>.cpp) does with one input, shared
-// with the regression test of the inputs the fuzzer found (tests/test_FuzzRegressions.cpp,
+// with the regression test of the inputs the fuzzer found (app/test/test_FuzzRegressions.cpp,
 // tests/data/fuzz/fuzz_<reader>/). Each returns the error message of a refused input ("" when
 // accepted); a bad input may only be refused with the error type the command line maps
 // to exit 2 (ScenarioError, std::invalid_argument, DataFileError). Any other exception, a

@@ -1,5 +1,5 @@
 """Every Python use quoted in README.md runs (its `rockroll` commands are checked by
-tests/test_DocCommands.cpp): each fenced ```python block as a script, and each line of a
+app/test/test_DocCommands.cpp): each fenced ```python block as a script, and each line of a
 fenced ```sh block that starts with `PYTHONPATH=build/python /usr/bin/python3` as a shell
 command; both in a fresh directory holding links to scenarios/ and examples/, with
 PYTHONPATH pointing at this build's module."""

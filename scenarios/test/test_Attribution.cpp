@@ -7,7 +7,7 @@
 #include "mbmodel/RockingModel.h"
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
-#include "TestCases.h"
+#include "tests/TestCases.h"
 
 #include <gtest/gtest.h>
 

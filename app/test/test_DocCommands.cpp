@@ -205,7 +205,7 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
         std::replace(fileDir.begin(), fileDir.end(), '/', '_');
         const fs::path dir = root / fileDir;
         const std::string placeholder = placeholderIn(c.text);
-        EXPECT_EQ(placeholder, "") << "quote a concrete command (see the convention in tests/test_DocCommands.cpp)";
+        EXPECT_EQ(placeholder, "") << "quote a concrete command (see the convention in app/test/test_DocCommands.cpp)";
         if (!placeholder.empty()) continue;
         std::vector<std::string> t = split(c.text);
         std::string args = c.text.substr(std::string("rockroll").size());

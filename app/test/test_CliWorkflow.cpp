@@ -267,7 +267,7 @@ TEST(CliWorkflow, AnOutputThatCannotBeWrittenExits2) {
 
 // A shipped data file that cannot be read (here the report's numbers, mit1976.toml, through
 // ROCKROLL_MIT1976) is bad input, exit 2, naming the file and the line; a missing one is the
-// same error class (mbmodel/DataFiles.h DataFileError; tests/test_DataFiles.cpp).
+// same error class (mbmodel/DataFiles.h DataFileError; mbmodel/test/test_DataFiles.cpp).
 TEST(CliWorkflow, ABrokenDataFileExits2) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     std::ofstream(dir / "mit1976.toml") << "[report]\nyear = { value = 1976, unit = \"\"\n";

@@ -3,7 +3,7 @@
 // and columns as the study file wrote them, and bad values refused with the study
 // file's line, the key, the value and the accepted range.
 #include "app/Study.h"
-#include "TestTmp.h"
+#include "tests/TestTmp.h"
 
 #include <gtest/gtest.h>
 
