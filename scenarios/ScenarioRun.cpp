@@ -1,6 +1,5 @@
 #include "scenarios/ScenarioRun.h"
 
-#include "mbmodel/RockingModel.h"
 #include "scenarios/ModelRegistry.h"
 
 #include <cmath>
