@@ -3,6 +3,7 @@
 // with the max roll each gives, and the ratios taken in the same run.
 //
 //   build/bin/rockroll_bench [--sim-seconds=T] [google-benchmark flags]
+#include "mbmodel/RockingModel.h"
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 

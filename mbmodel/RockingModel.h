@@ -2,6 +2,7 @@
 // Common base of the Simbody rocking models: the multibody system, the car body,
 // its trucks, static equilibrium and the recorded channels.
 #include "mbmodel/CarParameters.h"
+#include "mbmodel/ModelOptions.h"
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TrackInput.h"
 #include "mbmodel/Truck.h"
@@ -12,34 +13,6 @@
 #include <vector>
 
 namespace rockroll {
-
-/// Where the track perturbation starts relative to the car.
-enum class TrackEntry {
-    Lead,          ///< the leading wheelset enters at t = 0; the rear truck later (real track)
-    Synchronized,  ///< every truck's leading wheelset enters at t = 0 (same phase at both trucks)
-};
-
-/// Switches for attributing a difference between formulations (scenario table
-/// [attribution]); not for ordinary runs. They act on the wheelsets and their
-/// side frames (the Simbody wheelset bodies), never on the bolster or car body.
-struct AttributionSwitches {
-    /// false: gravity off the wheelsets and side frames, their masses kept
-    /// (Force::Gravity with those bodies excluded); the static wheel load falls by
-    /// their weight.
-    bool truckGravity = true;
-    /// Multiplies the wheelset bodies' masses and roll inertias; the weight lost
-    /// is put back by a constant downward force at each body's mass center, so the
-    /// static loads do not change. Element laws (dampings) keep the true masses.
-    double truckMassScale = 1;
-    bool isDefault() const { return truckGravity && truckMassScale == 1; }
-};
-
-struct ModelOptions {
-    double speed = 0;                     ///< [m/s]
-    TrackEntry entry = TrackEntry::Lead;
-    TrackMotion motion;                   ///< s(t); its speed is set from `speed` when left 0
-    AttributionSwitches attribution;      ///< default: none
-};
 
 class RockingModel {
 public:

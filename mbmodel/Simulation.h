@@ -3,6 +3,7 @@
 // accuracy, fixed-rate recording, and failure reports with time and state.
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/RunLimits.h"
+#include "mbmodel/RunSettings.h"
 #include "mbmodel/TimeHistory.h"
 
 #include <stdexcept>
@@ -10,21 +11,6 @@
 #include <vector>
 
 namespace rockroll {
-
-struct IntegratorSettings {
-    std::string method = "cpodes";  ///< cpodes | rkmerson | rk3 | rkf | verlet
-    double accuracy = 1e-4;
-    double maxStepSize = 0;         ///< 0 = integrator's default [s]
-};
-
-struct RunSettings {
-    double duration = 20;           ///< [s]
-    double outputRate = 500;        ///< samples per second [Hz]
-    IntegratorSettings integrator;
-    RunLimits limits;               ///< resolved (resolveRunLimits) before the run
-};
-
-std::vector<std::string> getIntegratorNames();
 
 /// Runs `model` from its static state for settings.duration.
 /// From static equilibrium, or (initialY not empty) from that flat state

@@ -6,9 +6,9 @@
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
-#include "mbmodel/RockingModel.h"
+#include "mbmodel/ModelOptions.h"
 #include "mbmodel/RunSummary.h"
-#include "mbmodel/Simulation.h"
+#include "mbmodel/RunSettings.h"
 #include "mbmodel/TrackInput.h"
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #include "scenarios/ScenarioRun.h"
 
+#include "mbmodel/RockingModel.h"
 #include "scenarios/ModelRegistry.h"
 
 #include <cmath>

@@ -1,9 +1,7 @@
 #pragma once
 // Runs one scenario end to end: the model the registry names, its simulation,
 // the summary, and the state to continue from.
-#include "mbmodel/RockingModel.h"
 #include "mbmodel/RunSummary.h"
-#include "mbmodel/Simulation.h"
 #include "scenarios/ScenarioLoader.h"
 #include "scenarios/TimeDomainModel.h"
 
@@ -11,6 +9,8 @@
 #include <optional>
 
 namespace rockroll {
+
+class RockingModel;  // mbmodel/RockingModel.h (Simbody): include it where the model is used
 
 /// Where a run starts. Default: static equilibrium on level track, at speed from
 /// t = 0. Continuing a speed sweep: the previous run's RestartState (its state,

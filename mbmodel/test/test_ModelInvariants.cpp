@@ -1,4 +1,5 @@
 // Whole-model invariants and the rocking behaviour the issue asks for.
+#include "mbmodel/RockingModel.h"
 #include "scenarios/ScenarioRun.h"
 #include "tests/TestCases.h"
 

@@ -1,6 +1,7 @@
 // The model registry: every time-domain model is reachable by its name alone, runs
 // from its own static state, continues from its own RestartState and refuses
 // another model's.
+#include "mbmodel/RockingModel.h"
 #include "scenarios/ModelRegistry.h"
 #include "tests/TestCases.h"
 

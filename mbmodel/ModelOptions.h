@@ -1,0 +1,37 @@
+#pragma once
+// What a model is built with besides the car and the track: speed, track entry, the
+// track's motion and the attribution switches. Simbody-free, so the scenario loader
+// and everything that only reads scenarios does not include Simbody.
+#include "mbmodel/TrackInput.h"
+
+namespace rockroll {
+
+/// Where the track perturbation starts relative to the car.
+enum class TrackEntry {
+    Lead,          ///< the leading wheelset enters at t = 0; the rear truck later (real track)
+    Synchronized,  ///< every truck's leading wheelset enters at t = 0 (same phase at both trucks)
+};
+
+/// Switches for attributing a difference between formulations (scenario table
+/// [attribution]); not for ordinary runs. They act on the wheelsets and their
+/// side frames (the Simbody wheelset bodies), never on the bolster or car body.
+struct AttributionSwitches {
+    /// false: gravity off the wheelsets and side frames, their masses kept
+    /// (Force::Gravity with those bodies excluded); the static wheel load falls by
+    /// their weight.
+    bool truckGravity = true;
+    /// Multiplies the wheelset bodies' masses and roll inertias; the weight lost
+    /// is put back by a constant downward force at each body's mass center, so the
+    /// static loads do not change. Element laws (dampings) keep the true masses.
+    double truckMassScale = 1;
+    bool isDefault() const { return truckGravity && truckMassScale == 1; }
+};
+
+struct ModelOptions {
+    double speed = 0;                     ///< [m/s]
+    TrackEntry entry = TrackEntry::Lead;
+    TrackMotion motion;                   ///< s(t); its speed is set from `speed` when left 0
+    AttributionSwitches attribution;      ///< default: none
+};
+
+}  // namespace rockroll
