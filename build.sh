@@ -17,7 +17,7 @@ else
   # Simbody's own build needs LAPACK/BLAS; apt-get source needs dpkg-dev.
   simbody_packages=(liblapack-dev libblas-dev dpkg-dev patch xz-utils)
 fi
-packages=("${simbody_packages[@]}" build-essential cmake libeigen3-dev libtomlplusplus-dev libcli11-dev
+packages=("${simbody_packages[@]}" build-essential cmake ninja-build libeigen3-dev libtomlplusplus-dev libcli11-dev
           libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsundials-dev libssl-dev libtbb-dev
           python3-matplotlib pybind11-dev python3-dev python3-numpy python3-pytest parallel)
 missing=()
@@ -35,7 +35,12 @@ fi
 if [ "$system_simbody" != "ON" ]; then
   third_party/simbody/build-simbody.sh build/third_party/simbody
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DROCKROLL_SYSTEM_SIMBODY="$system_simbody" >/dev/null
+# Ninja schedules every object of every target on both cores (Make waits for each
+# library before compiling the objects that use it). A build/ made earlier with
+# another generator keeps it: CMake refuses to switch generators in place.
+generator=(-G Ninja)
+[ -f build/CMakeCache.txt ] && generator=()
+cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DROCKROLL_SYSTEM_SIMBODY="$system_simbody" >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build build -j"$(nproc)" "${targets[@]}" >&2

@@ -2,6 +2,7 @@
 
 #include "bespoke/EomSimulation.h"
 #include "bespoke/StiffIntegrator.h"
+#include "contacts/BristleFriction.h"
 #include "mbmodel/Parallel.h"
 #include "mbmodel/Units.h"
 
@@ -24,7 +25,6 @@ const char* toString(Stability s) {
 }
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 constexpr double kUnknownScale = 1e-3;  // unknowns in mm and mrad
 constexpr double kForceScale = 1e4;     // residuals in 10 kN and 10 kN·m
 constexpr int kSamples = 720;           // per period, for output maxima
@@ -39,8 +39,6 @@ PiecewiseLinearLaw makeCompressionOnly(double stiffness, double clearance) {
     // Penetration δ = −d − clearance; f = k·max(0, δ).
     return {{-clearance}, {-stiffness * clearance, 0.0}, {-stiffness, 0.0}, 0.0};
 }
-
-double criticalDamping(double k, double m, double zeta) { return 2 * zeta * std::sqrt(k * m); }
 
 using VectorFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 /// A forward-difference Jacobian, column i with the step 1e-6·max(1, |x_i|) (see
@@ -103,11 +101,11 @@ DescribingFunctionModel::DescribingFunctionModel(const CarParameters& car, doubl
 }
 
 double DescribingFunctionModel::calcFundamentalCrossLevel(double A, double wheelbase, double railLength) {
-    return 8 * A / (3 * kPi) * std::cos(kPi * wheelbase / railLength);
+    return 8 * A / (3 * std::numbers::pi) * std::cos(std::numbers::pi * wheelbase / railLength);
 }
 
 double DescribingFunctionModel::calcOmega(double speedMph) const {
-    return 2 * kPi * speedMph * units::mph / railLength_;
+    return 2 * std::numbers::pi * speedMph * units::mph / railLength_;
 }
 
 void DescribingFunctionModel::buildElements() {
@@ -123,7 +121,7 @@ void DescribingFunctionModel::buildElements() {
                              makeCompressionOnly(L.sideBearing.stiffness, L.sideBearingClearance), "side_bearing"});
         elements_.push_back({kAxisZ, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
                              makeLinear(L.spring.rate, 0), "spring"});
-        const double cLock = criticalDamping(L.lateral.rate, reference_.getMass(M::Bolster) / 2,
+        const double cLock = calcBristleDamping(L.lateral.rate, reference_.getMass(M::Bolster) / 2,
                                              car_.lateralContactDampingRatio);
         elements_.push_back({kAxisY, M::Bolster, g.springOnBolster[side], M::Wheelset, g.seatOnWheelset[side], -1,
                              makeLinear(L.lateral.rate, cLock), "lateral_lock"});
@@ -309,7 +307,7 @@ SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, dou
     // sin kτ, cos kτ of every sample, once (evaluate(Angles) is bit-identical to evaluate(τ)).
     static const std::vector<TrigSeries::Angles> samples = [] {
         std::vector<TrigSeries::Angles> a;
-        for (int s = 0; s < kSamples; ++s) a.emplace_back(2 * kPi * s / kSamples, kHarmonics);
+        for (int s = 0; s < kSamples; ++s) a.emplace_back(2 * std::numbers::pi * s / kSamples, kHarmonics);
         return a;
     }();
     enum class Role { Other, Wheel, SideBearing, Rim };
@@ -378,7 +376,7 @@ EomHalfCarModel::State DescribingFunctionModel::makeTwinState(const Eigen::Vecto
 TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, double speedMph) const {
     using M = EomHalfCarModel;
     const EomHalfCarModel twin = makeTwin(speedMph);
-    const double period = 2 * kPi / calcOmega(speedMph);
+    const double period = 2 * std::numbers::pi / calcOmega(speedMph);
     const double accuracy = 1e-7;
     StiffIntegrator integ(
         M::kNumStates,
@@ -455,7 +453,7 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
 
 double DescribingFunctionModel::calcTwinPersistence(const Eigen::VectorXd& x, double speedMph, int periods) const {
     const EomHalfCarModel twin = makeTwin(speedMph);
-    const double period = 2 * kPi / calcOmega(speedMph);
+    const double period = 2 * std::numbers::pi / calcOmega(speedMph);
     const RunResult r = simulateEom(twin, {periods * period, 200, 1e-6, RunLimits{}}, makeTwinState(x, speedMph));
     const int c = r.history.column("roll_deg");
     double lo = 1e9, hi = -1e9;

@@ -1,5 +1,7 @@
 #include "bespoke/EomHalfCarModel.h"
 
+#include "contacts/BristleFriction.h"
+#include "mbmodel/CarSide.h"
 #include "mbmodel/TrackInput.h"
 #include "mbmodel/Units.h"
 
@@ -10,11 +12,8 @@
 namespace rockroll {
 
 namespace {
-constexpr double kSideSign[2] = {+1.0, -1.0};
-constexpr const char* kSideName[2] = {"L", "R"};
 constexpr int kWedgeVertical = 0, kWedgeLateral = 1;  // + 2·side
 
-double criticalDamping(double stiffness, double mass, double ratio) { return 2 * ratio * std::sqrt(stiffness * mass); }
 using Vec2 = Eigen::Vector2d;
 }  // namespace
 
@@ -48,14 +47,14 @@ EomHalfCarModel::EomHalfCarModel(const CarParameters& car, RailStateFunction rai
     laws_.spring = {car.springVerticalRate, car.springTravel, car.bottomingRate};
     laws_.lateral = {car.springLateralRate, car.gibClearance, car.gibRate, d};
     laws_.pinStiffness = scale * car.centerPinStiffness;
-    laws_.pinDamping = criticalDamping(laws_.pinStiffness, mB, car.lateralContactDampingRatio);
+    laws_.pinDamping = calcBristleDamping(laws_.pinStiffness, mB, car.lateralContactDampingRatio);
     laws_.wheelLateralStiffness = 2 * scale * car.wheelRailLateralStiffness;
-    laws_.wheelLateralDamping = criticalDamping(laws_.wheelLateralStiffness, mass_[Wheelset], car.lateralContactDampingRatio);
+    laws_.wheelLateralDamping = calcBristleDamping(laws_.wheelLateralStiffness, mass_[Wheelset], car.lateralContactDampingRatio);
     const double kV = car.verticalFriction / car.frictionBristleDeflection;
     const double kH = car.lateralFriction / car.frictionBristleDeflection;
     const double zeta = car.frictionBristleDampingRatio;
-    laws_.wedgeVertical = {car.verticalFriction, kV, criticalDamping(kV, mB / 2, zeta)};
-    laws_.wedgeLateral = {car.lateralFriction, kH, criticalDamping(kH, mB / 2, zeta)};
+    laws_.wedgeVertical = {car.verticalFriction, kV, calcBristleDamping(kV, mB / 2, zeta)};
+    laws_.wedgeLateral = {car.lateralFriction, kH, calcBristleDamping(kH, mB / 2, zeta)};
     if (simp.lockBolsterLateral) {
         // A stiff, damped lateral link per bolster end (half the center pin's
         // stiffness each) replaces spring group, gib and lateral wedge.
@@ -75,7 +74,7 @@ double EomHalfCarModel::calcSpringEnergy(double Z) const {
 }
 
 double EomHalfCarModel::calcLockedLinkDamping() const {
-    return criticalDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
+    return calcBristleDamping(laws_.lateral.rate, mass_[Bolster] / 2, car_.lateralContactDampingRatio);
 }
 
 TruckStatics EomHalfCarModel::calcTruckStatics() const {

@@ -9,7 +9,6 @@
 namespace rockroll {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 int findSegment(const std::vector<double>& breakpoints, double d) {
     return int(std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin());
@@ -27,10 +26,10 @@ void addPiece(const TrigSeries& g, const TrigSeries::Angles& a0, const TrigSerie
               const std::vector<TrigSeries>& weights, std::vector<TrigSeries>& out) {
     for (size_t j = 0; j < weights.size(); ++j) {
         const TrigSeries Q = g * weights[j];
-        out[j].updMean() += Q.integrate(a0, a1) / (2 * kPi);
+        out[j].updMean() += Q.integrate(a0, a1) / (2 * std::numbers::pi);
         for (int k = 1; k <= harmonics; ++k) {
-            out[j].updCos(k) += Q.timesHarmonic(k, false).integrate(a0, a1) / kPi;
-            out[j].updSin(k) += Q.timesHarmonic(k, true).integrate(a0, a1) / kPi;
+            out[j].updCos(k) += Q.timesHarmonic(k, false).integrate(a0, a1) / std::numbers::pi;
+            out[j].updSin(k) += Q.timesHarmonic(k, true).integrate(a0, a1) / std::numbers::pi;
         }
     }
 }
@@ -41,7 +40,7 @@ template <class LawOn>
 std::vector<TrigSeries> integratePiecewise(std::vector<double> cuts, int harmonics, const std::vector<TrigSeries>& weights,
                                            int forceDegree, const LawOn& lawOn) {
     cuts.push_back(0);
-    cuts.push_back(2 * kPi);
+    cuts.push_back(2 * std::numbers::pi);
     std::sort(cuts.begin(), cuts.end());
     const int degree = std::min(TrigSeries::kMaxDegree, forceDegree + getMaxDegree(weights) + harmonics);
     std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
@@ -76,13 +75,13 @@ std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, i
 
 TrigSeries integrateNumerically(int harmonics, int n, const std::function<double(double)>& f) {
     TrigSeries out(harmonics);
-    const double h = 2 * kPi / n;
+    const double h = 2 * std::numbers::pi / n;
     for (int i = 0; i < n; ++i) {
         const double tau = (i + 0.5) * h, v = f(tau) * h;
-        out.updMean() += v / (2 * kPi);
+        out.updMean() += v / (2 * std::numbers::pi);
         for (int k = 1; k <= harmonics; ++k) {
-            out.updCos(k) += v * std::cos(k * tau) / kPi;
-            out.updSin(k) += v * std::sin(k * tau) / kPi;
+            out.updCos(k) += v * std::cos(k * tau) / std::numbers::pi;
+            out.updSin(k) += v * std::sin(k * tau) / std::numbers::pi;
         }
     }
     return out;
@@ -141,7 +140,7 @@ TrigSeries calcForceHarmonicsNumerically(const CoulombLaw& law, const TrigSeries
 std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d) {
     const double k = law.stiffness, Fc = law.limit;
     const std::vector<double> turning = d.derivative().findRoots(0);
-    if (turning.size() < 2) return {{0, 2 * kPi, TrigSeries::constant(0)}};
+    if (turning.size() < 2) return {{0, 2 * std::numbers::pi, TrigSeries::constant(0)}};
     size_t iMax = 0, iMin = 0;
     for (size_t i = 0; i < turning.size(); ++i) {
         if (d.evaluate(turning[i]) > d.evaluate(turning[iMax])) iMax = i;
@@ -149,14 +148,14 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
     }
     const double dMax = d.evaluate(turning[iMax]), dMin = d.evaluate(turning[iMin]);
     if (dMax - dMin <= 2 * Fc / k)  // sticks all period, about mid-range
-        return {{0, 2 * kPi, TrigSeries::constant(k * 0.5 * (dMax + dMin)) + d * -k}};
+        return {{0, 2 * std::numbers::pi, TrigSeries::constant(k * 0.5 * (dMax + dMin)) + d * -k}};
 
     std::vector<double> t;  // turning points from the global maximum, unwrapped
     for (size_t i = 0; i < turning.size(); ++i) {
         const double ti = turning[(iMax + i) % turning.size()];
-        t.push_back(ti < turning[iMax] ? ti + 2 * kPi : ti);
+        t.push_back(ti < turning[iMax] ? ti + 2 * std::numbers::pi : ti);
     }
-    t.push_back(turning[iMax] + 2 * kPi);
+    t.push_back(turning[iMax] + 2 * std::numbers::pi);
     std::vector<ForcePiece> pieces;
     double fr = -Fc, dr = dMax;
     for (size_t i = 0; i + 1 < t.size(); ++i) {
@@ -194,8 +193,8 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
 
 double evaluateHistory(const std::vector<ForcePiece>& pieces, double tau) {
     const double start = pieces.front().t0;
-    double t = std::fmod(tau - start, 2 * kPi);
-    if (t < 0) t += 2 * kPi;
+    double t = std::fmod(tau - start, 2 * std::numbers::pi);
+    if (t < 0) t += 2 * std::numbers::pi;
     t += start;
     for (const ForcePiece& p : pieces)
         if (t >= p.t0 && t <= p.t1) return p.force.evaluate(t);
@@ -209,7 +208,7 @@ std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const Tr
 
 TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,
                                          int harmonics, int n) {
-    const double h = 2 * kPi / n;
+    const double h = 2 * std::numbers::pi / n;
     double f = 0, dPrev = d.evaluate(0);
     TrigSeries out(harmonics);
     for (int i = 0; i < 2 * n; ++i) {
@@ -218,10 +217,10 @@ TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const Trig
         dPrev = dNow;
         if (i < n) continue;
         const double v = f * w.evaluate(tau) * h;
-        out.updMean() += v / (2 * kPi);
+        out.updMean() += v / (2 * std::numbers::pi);
         for (int k = 1; k <= harmonics; ++k) {
-            out.updCos(k) += v * std::cos(k * tau) / kPi;
-            out.updSin(k) += v * std::sin(k * tau) / kPi;
+            out.updCos(k) += v * std::cos(k * tau) / std::numbers::pi;
+            out.updSin(k) += v * std::sin(k * tau) / std::numbers::pi;
         }
     }
     return out;

@@ -2,6 +2,7 @@
 
 #include "bespoke/StiffIntegrator.h"
 #include "contacts/SpringGroupLaws.h"
+#include "mbmodel/CarSide.h"
 #include "mbmodel/Units.h"
 
 #include <chrono>
@@ -12,8 +13,6 @@
 namespace rockroll {
 
 namespace {
-constexpr double kSide[2] = {+1.0, -1.0};
-constexpr const char* kSideName[2] = {"L", "R"};
 }  // namespace
 
 ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options)
@@ -58,8 +57,8 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const
     TruckInputs in;
     const RailState rail = rails_(t);
     for (int i : {0, 1}) {
-        in.rimZ[i] = y[2] - h + y[0] * kSide[i] * truck_.a_c;
-        in.padZ[i] = y[2] - h + padAbovePlate + y[0] * kSide[i] * truck_.a_s;
+        in.rimZ[i] = y[2] - h + y[0] * kSideSign[i] * truck_.a_c;
+        in.padZ[i] = y[2] - h + padAbovePlate + y[0] * kSideSign[i] * truck_.a_s;
         in.railZ[i] = rail.z[i];
     }
     in.plateY = y[1] + y[0] * h;  // small angles: y + p_y − θ·p_z with p = (0, −h)
@@ -80,7 +79,7 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
     for (int i : {0, 1}) {
         const double Fc = e.truck.rim[i], Fs = e.truck.sideBearing[i];
         Fz += Fc + Fs;
-        M += Fc * (kSide[i] * truck_.a_c + y[0] * h) + Fs * (kSide[i] * truck_.a_s - y[0] * (padAbovePlate - h));
+        M += Fc * (kSideSign[i] * truck_.a_c + y[0] * h) + Fs * (kSideSign[i] * truck_.a_s - y[0] * (padAbovePlate - h));
     }
     e.derivative.head<3>() = y.tail<3>();
     e.derivative[3] = M / inertia_;

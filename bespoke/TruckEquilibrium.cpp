@@ -1,6 +1,7 @@
 #include "bespoke/TruckEquilibrium.h"
 
 #include "contacts/SpringGroupLaws.h"
+#include "mbmodel/CarSide.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,7 +13,6 @@
 namespace rockroll {
 
 namespace {
-constexpr double kSide[2] = {+1.0, -1.0};
 enum Unknown { ZB, TB, ZW, TW, FCL, FCR, FSL, FSR, WL, WR, PHIL, PHIR, YB, FH, PHIH, N };
 using Row = Eigen::Matrix<double, 1, N>;
 
@@ -53,7 +53,7 @@ Kinematics makeKinematics(const TruckGeometry& g, const TruckInputs& in) {
     Kinematics k;
     const double seatHeight = g.springTopAboveRail - g.wheelRadius;
     for (int i : {0, 1}) {
-        const double s = kSide[i];
+        const double s = kSideSign[i];
         // Bolster rim: z_b + h_cp + θ_b·s·a_c; gap = car body rim − bolster rim.
         k.rimGap[i].row[ZB] = -1;
         k.rimGap[i].row[TB] = -s * g.a_c;
@@ -211,6 +211,11 @@ void assembleRhs(const TruckGeometry& g, const TruckInputs& in, const TruckMode&
     }
 }
 
+}  // namespace
+
+// Named, not anonymous: TruckModeCache::Factor (declared in the header) derives from it.
+namespace truck_equilibrium_detail {
+
 /// The scaled, row-equilibrated matrix's factorization: a function of the mode and
 /// the geometry only (the inputs enter b alone), so TruckModeCache keeps one per mode.
 struct ModeFactor {
@@ -240,6 +245,10 @@ struct ModeFactor {
         return x;
     }
 };
+}  // namespace truck_equilibrium_detail
+using truck_equilibrium_detail::ModeFactor;
+
+namespace {
 
 const Eigen::Matrix<double, N, 1>& getColumnScale() {
     // Unknowns in mm, mrad and 10 kN.

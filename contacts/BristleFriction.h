@@ -1,4 +1,6 @@
 #pragma once
+#include <cmath>
+
 // Elasto-plastic ("bristle") Coulomb friction law: a stiff spring in series with
 // a slider whose anchor is state. Used by the friction wedges and the center
 // plate's yaw friction. It sticks for real: under a steady force below the limit
@@ -52,5 +54,12 @@ double calcBristleEnergy(double deflection, const BristleFrictionLaw& law);
 /// relaxation of an overstretched bristle adds k_b·w·(w ∓ w_max)/τ ≥ 0. With
 /// no normal load (F_c = 0) the bristle relaxes: P = k_b·w²/τ.
 double calcBristleDissipation(double deflection, double slidingVelocity, const BristleFrictionLaw& law);
+
+/// Bristle damping that gives a bristle of stiffness k_b, carrying mass m, the
+/// damping ratio ζ: c_b = 2·ζ·√(k_b·m). Every formulation damps its wedge and
+/// center-plate yaw bristles this way (docs/model.md, assumed values).
+inline double calcBristleDamping(double stiffness, double mass, double dampingRatio) {
+    return 2 * dampingRatio * std::sqrt(stiffness * mass);
+}
 
 }  // namespace rockroll

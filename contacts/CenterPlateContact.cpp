@@ -5,9 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 CenterPlateContact::CenterPlateContact(const GeneralForceSubsystem& forces, CenterPlateGeometry g,
                                        CenterPlateLaw law)

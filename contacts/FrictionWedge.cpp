@@ -1,8 +1,8 @@
 #include "contacts/FrictionWedge.h"
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 namespace {
 int axisOf(FrictionWedge::Direction d) { return d == FrictionWedge::Vertical ? 2 : 1; }

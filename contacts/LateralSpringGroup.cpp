@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 double LateralSpringGroup::calcForce(const State& s) const {
     return calcLateralSpringForce(calcDisplacement(s), link_.calcRelativeVelocity(s)[1], law_);

@@ -1,8 +1,8 @@
 #include "contacts/SuspensionLink.h"
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 Vec3 SideFrameSeat::findLocationInGround(const State& s) const {
     Vec3 sum(0);

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 double VerticalPointPair::calcPenetration(const State& s) const {
     const Vec3 p_GU = upper.findStationLocationInGround(s, p_UpperPoint);

@@ -1,8 +1,8 @@
 #include "contacts/VerticalSpringGroup.h"
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 void VerticalSpringGroup::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
                                     Vector_<Vec3>&, Vector&) const {

@@ -2,9 +2,9 @@
 
 #include "contacts/SpringGroupLaws.h"
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 WheelRailForces WheelRailContact::calcForces(const State& s) const {
     if (const WheelRailForces* cached = cache_.find(wheelset_.getMatterSubsystem(), s)) return *cached;

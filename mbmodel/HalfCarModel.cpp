@@ -1,8 +1,8 @@
 #include "mbmodel/HalfCarModel.h"
 
-using namespace SimTK;
-
 namespace rockroll {
+// Inside the namespace, so it reaches no other library's code in a unity build.
+using namespace SimTK;
 
 HalfCarModel::HalfCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options)
     : RockingModel(car, track, options) {

@@ -1,5 +1,7 @@
 #include "mbmodel/Truck.h"
+#include "contacts/BristleFriction.h"
 #include "contacts/CustomForce.h"
+#include "mbmodel/CarSide.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -12,13 +14,6 @@ using SimTK::System; using SimTK::Integrator;
 namespace rockroll {
 
 namespace {
-constexpr int kLeft = 0, kRight = 1;
-constexpr double kSideSign[2] = {+1.0, -1.0};
-constexpr const char* kSideName[2] = {"L", "R"};
-
-double criticalDamping(double stiffness, double mass, double ratio) {
-    return 2 * ratio * std::sqrt(stiffness * mass);
-}
 }  // namespace
 
 MobilizedBody::Planar makeCrossSectionBody(MobilizedBody& ground, double x, const Body::Rigid& body) {
@@ -74,13 +69,13 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
     CenterPlateLaw cpl;
     cpl.rim = {scale * car_.centerPlateStiffness / cpg.rimPoints, d};
     cpl.pinStiffness = scale * car_.centerPinStiffness;
-    cpl.pinDamping = criticalDamping(cpl.pinStiffness, mB, car_.lateralContactDampingRatio);
+    cpl.pinDamping = calcBristleDamping(cpl.pinStiffness, mB, car_.lateralContactDampingRatio);
     cpl.longitudinalPin = spec_.threeDimensional;
     if (spec_.threeDimensional && car_.centerPlateFriction > 0) {
         const double staticTorque = car_.centerPlateFriction * spec_.carBodyLoad * (2.0 / 3.0) * cpg.radius;
         cpl.yawFrictionCoefficient = car_.centerPlateFriction;
         cpl.yawBristleStiffness = staticTorque / car_.centerPlateYawBristleAngle;
-        cpl.yawBristleDamping = criticalDamping(cpl.yawBristleStiffness, car_.yawInertia / 2,
+        cpl.yawBristleDamping = calcBristleDamping(cpl.yawBristleStiffness, car_.yawInertia / 2,
                                                 car_.frictionBristleDampingRatio);
     }
     centerPlate_ = &addCustomForce<CenterPlateContact>(forces, forces, cpg, cpl);
@@ -107,8 +102,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
             forces, makeSuspensionLink(sg),
             LateralSpringLaw{car_.springLateralRate, car_.gibClearance, car_.gibRate, d});
 
-        BristleFrictionLaw fv{car_.verticalFriction, kWedgeV, criticalDamping(kWedgeV, mB / 2, zeta)};
-        BristleFrictionLaw fh{car_.lateralFriction, kWedgeH, criticalDamping(kWedgeH, mB / 2, zeta)};
+        BristleFrictionLaw fv{car_.verticalFriction, kWedgeV, calcBristleDamping(kWedgeV, mB / 2, zeta)};
+        BristleFrictionLaw fh{car_.lateralFriction, kWedgeH, calcBristleDamping(kWedgeH, mB / 2, zeta)};
         wedge_[side] = &addCustomForce<FrictionWedge>(forces, forces, makeSuspensionLink(sg), fv, fh);
     }
 
@@ -122,7 +117,7 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         WheelRailLaw law;
         law.vertical = {n * scale * car_.wheelRailStiffness, d};
         law.lateralStiffness = n * scale * car_.wheelRailLateralStiffness;
-        law.lateralDamping = criticalDamping(law.lateralStiffness, m, car_.lateralContactDampingRatio);
+        law.lateralDamping = calcBristleDamping(law.lateralStiffness, m, car_.lateralContactDampingRatio);
         const std::array<Vec3, 2> tread{Vec3(0, car_.gauge / 2, -car_.wheelRadius),
                                         Vec3(0, -car_.gauge / 2, -car_.wheelRadius)};
         wheelRail_.push_back(&addCustomForce<WheelRailContact>(

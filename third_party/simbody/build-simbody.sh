@@ -53,7 +53,7 @@ done
 
 log="$work/build.log"
 fail() { tail -40 "$log" >&2; echo "build-simbody.sh: $1 failed; full log: $log" >&2; exit 1; }
-cmake -S "$srcdir" -B "$work/build" \
+cmake -S "$srcdir" -B "$work/build" -G Ninja \
   -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_INSTALL_PREFIX="$prefix" \
   -DCMAKE_INSTALL_LIBDIR=lib \
