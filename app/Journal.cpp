@@ -143,7 +143,7 @@ RunSummary summaryFromJson(const Json& j) {
     s.filter = j.at("filter").get<std::string>();
     s.simTimeS = j.at("sim_time_s").get<double>();
     s.wallTimeS = j.at("wall_time_s").get<double>();
-    s.steps = j.at("steps").get<long>();
+    s.steps = getJsonInteger<long>(j, "steps");
     return s;
 }
 
@@ -373,7 +373,7 @@ std::vector<std::vector<SweepPoint>> collectSweepPoints(const ParsedJournal& jou
         const Json& j = journal.points[n];
         const size_t line = n + 2;
         try {
-            const size_t sweep = j.at("sweep").get<size_t>(), index = j.at("index").get<size_t>();
+            const size_t sweep = getJsonInteger<size_t>(j, "sweep"), index = getJsonInteger<size_t>(j, "index");
             if (sweep >= specs.size())
                 throw std::invalid_argument(fmt::format("sweep {} of a batch of {}", sweep, specs.size()));
             SweepPoint p = sweepPointFromJournal(j);

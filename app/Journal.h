@@ -13,12 +13,16 @@
 #include "scenarios/SpeedSweep.h"
 #include "scenarios/TimeDomainModel.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <stdexcept>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace rockroll::app {
@@ -31,6 +35,25 @@ std::string formatHexDouble(double x);
 double parseHexDouble(std::string_view text);
 nlohmann::ordered_json toHexJson(const std::vector<double>& v);
 std::vector<double> fromHexJson(const nlohmann::ordered_json& a);
+
+/// The integer `j[key]` as T. std::invalid_argument naming the key unless the value is a
+/// JSON integer within T's range: a journal or shard is a file a person may edit, and
+/// nlohmann's get<T>() of a number such as 1e300 converts it with undefined behaviour.
+template <class T>
+T getJsonInteger(const nlohmann::ordered_json& j, const char* key) {
+    const nlohmann::ordered_json& v = j.at(key);
+    if (v.is_number_unsigned()) {
+        const auto u = v.get<std::uint64_t>();
+        if (u <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return static_cast<T>(u);
+    } else if (v.is_number_integer()) {  // negative
+        const auto i = v.get<std::int64_t>();
+        if (std::is_signed_v<T> && i >= static_cast<std::int64_t>(std::numeric_limits<T>::min()))
+            return static_cast<T>(i);
+    }
+    throw std::invalid_argument("\"" + std::string(key) + "\" is " + v.dump() + "; expected an integer from " +
+                                std::to_string(std::numeric_limits<T>::min()) + " to " +
+                                std::to_string(std::numeric_limits<T>::max()));
+}
 
 /// A continuation state (scenarios/TimeDomainModel.h) as JSON with hex doubles, and back.
 nlohmann::ordered_json toJson(const RestartState& s);

@@ -616,27 +616,27 @@ Json mergeStudies(const std::vector<std::string>& dirs) {
                                             dirs[s], *d));
         if (auto d = describeJsonDifference(first.at("varied"), j.at("varied")))
             throw ScenarioError(fmt::format("merge: {} and {} vary different values: {}", dirs.front(), dirs[s], *d));
-        const size_t k = j.at("shard").at("k").get<size_t>(), n = j.at("shard").at("n").get<size_t>();
-        if (n != first.at("shard").at("n").get<size_t>())
+        const size_t k = getJsonInteger<size_t>(j.at("shard"), "k"), n = getJsonInteger<size_t>(j.at("shard"), "n");
+        if (n != getJsonInteger<size_t>(first.at("shard"), "n"))
             throw ScenarioError(fmt::format("merge: {} is shard {}/{}, {} is shard {}/{}: expected shards of one split",
                                             dirs.front(), first["shard"]["k"].get<size_t>(),
                                             first["shard"]["n"].get<size_t>(), dirs[s], k, n));
         if (auto [it, added] = shardOf.emplace(k, dirs[s]); !added)
             throw ScenarioError(fmt::format("merge: {} and {} are both shard {}/{}", it->second, dirs[s], k, n));
         for (const Json& p : j.at("points")) {
-            const size_t i = p.at("point").get<size_t>();
+            const size_t i = getJsonInteger<size_t>(p, "point");
             if (auto [it, added] = pointOf.emplace(i, dirs[s]); !added)
                 throw ScenarioError(fmt::format("merge: point {} is in both {} and {}", i, it->second, dirs[s]));
             points.push_back(p);
         }
     }
-    const size_t count = first.at("study").at("point_count").get<size_t>();
+    const size_t count = getJsonInteger<size_t>(first.at("study"), "point_count");
     std::vector<size_t> missing;
     for (size_t i = 0; i < count; ++i)
         if (!pointOf.count(i)) missing.push_back(i);
     if (!missing.empty()) {
         std::vector<size_t> shown(missing.begin(), missing.begin() + long(std::min<size_t>(missing.size(), 20)));
-        const size_t n = first.at("shard").at("n").get<size_t>();
+        const size_t n = getJsonInteger<size_t>(first.at("shard"), "n");
         std::vector<size_t> absent;
         for (size_t k = 1; k <= n; ++k)
             if (!shardOf.count(k)) absent.push_back(k);

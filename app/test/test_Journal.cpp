@@ -185,3 +185,32 @@ TEST(Journal, AnotherBatchIsRefusedNamingWhatDiffers) {
         << refusal(set);
     EXPECT_NE(refusal(set).find("DIR.partial/journal.jsonl"), std::string::npos);
 }
+
+// A journal's or shard's integers (a point's step count, sweep and index, a study shard's
+// k and n) are refused unless they are JSON integers in range; a float such as 1e300 was
+// converted with undefined behaviour (UBSan, fuzz_journal) and 12.5 read as 12.
+TEST(Journal, IntegersMustBeIntegersInRange) {
+    const Json j = Json::parse(R"({"n": 7, "neg": -3, "big": 1e300, "half": 12.5, "huge": 18446744073709551615,
+                                   "text": "7", "none": null})");
+    EXPECT_EQ(getJsonInteger<long>(j, "n"), 7);
+    EXPECT_EQ(getJsonInteger<size_t>(j, "n"), 7u);
+    EXPECT_EQ(getJsonInteger<long>(j, "neg"), -3);
+    EXPECT_EQ(getJsonInteger<size_t>(j, "huge"), std::numeric_limits<size_t>::max());
+    for (const char* key : {"big", "half", "text", "none"}) {
+        EXPECT_THROW(getJsonInteger<long>(j, key), std::invalid_argument) << key;
+        EXPECT_THROW(getJsonInteger<size_t>(j, key), std::invalid_argument) << key;
+    }
+    EXPECT_THROW(getJsonInteger<size_t>(j, "neg"), std::invalid_argument);
+    EXPECT_THROW(getJsonInteger<long>(j, "huge"), std::invalid_argument);
+    try {
+        getJsonInteger<long>(j, "big");
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("\"big\" is 1e+300; expected an integer"), std::string::npos) << e.what();
+    }
+
+    Json summary = toJson(makeSummary());
+    summary["steps"] = 1e300;
+    EXPECT_THROW(summaryFromJson(summary), std::invalid_argument);
+    summary["steps"] = 12.5;
+    EXPECT_THROW(summaryFromJson(summary), std::invalid_argument);
+}

@@ -5,6 +5,7 @@
 // accepted); a bad input may only be refused with the error type the command line maps
 // to exit 2 (ScenarioError, std::invalid_argument, DataFileError). Any other exception, a
 // crash or a sanitizer report is a finding.
+#include "app/Journal.h"
 #include "app/Provenance.h"
 #include "bench/fuzz/FuzzFiles.h"
 #include "mbmodel/DataFiles.h"
@@ -101,6 +102,25 @@ inline std::string readSummary(std::string_view input) {
 inline std::string readMit1976(std::string_view input) {
     const auto path = writeFuzzFile("mit1976.toml", input);
     return getInputError([&] { (void)Mit1976(path).count("table3"); });
+}
+
+/// A sweep journal (DIR.partial/journal.jsonl), read as `rockroll sweep --resume` reads it:
+/// parsed, then each point line read as a sweep point. A point line that cannot be read
+/// (a missing or mistyped key, a bad hex float, an integer out of range) is refused naming
+/// its line, as collectSweepPoints refuses it.
+inline std::string readJournal(std::string_view input) {
+    return getInputError([&] {
+        const app::ParsedJournal journal = app::parseJournal(input, "<fuzz>");
+        for (size_t n = 0; n < journal.points.size(); ++n) {
+            try {
+                (void)app::sweepPointFromJournal(journal.points[n]);
+            } catch (const nlohmann::json::exception& e) {
+                throw ScenarioError("<fuzz>:" + std::to_string(n + 2) + ": not a point of this sweep: " + e.what());
+            } catch (const std::invalid_argument& e) {
+                throw ScenarioError("<fuzz>:" + std::to_string(n + 2) + ": not a point of this sweep: " + e.what());
+            }
+        }
+    });
 }
 
 }  // namespace rockroll::fuzz

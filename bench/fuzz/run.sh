@@ -3,7 +3,9 @@
 # into build-fuzz/) and runs each for RUNS executions (default 1,000,000), seeded from the
 # project's own files (scenarios/, scenarios/cars/, scenarios/tracks/, tests/data/bad/).
 #   bench/fuzz/run.sh [RUNS] [HARNESS...]     e.g. bench/fuzz/run.sh 1000000 fuzz_track_csv
-#   FUZZ_JOBS=2 runs two harnesses at a time; FUZZ_MAX_SECONDS=S stops each after S seconds.
+#   FUZZ_JOBS=2 runs two harnesses at a time; FUZZ_MAX_SECONDS=S stops each after S seconds;
+#   FUZZ_BUILD=0 runs the harnesses already in build-fuzz/fuzz/ without building (a commit
+#   changes app/BuildInfo.h, so a build would relink every harness).
 # Needs Debian's clang and libclang-rt-<version>-dev (fuzzing only; not in build.sh's list).
 # Writes, under build-fuzz/fuzz-out/:
 #   crashes/<harness>/   crash-*, timeout-* (over 10 s), oom-* (over 2 GB) inputs: none expected;
@@ -16,8 +18,10 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs="${1:-1000000}"
 shift || true
-cmake --preset fuzz >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target fuzz >&2
+if [ "${FUZZ_BUILD:-1}" != 0 ]; then
+  cmake --preset fuzz >/dev/null
+  cmake --build build-fuzz -j"$(nproc)" --target fuzz >&2
+fi
 out=build-fuzz/fuzz-out
 mkdir -p "$out/crashes" "$out/corpus" "$out/logs" "$out/seeds"
 if [ $# -gt 0 ]; then harnesses=("$@"); else
@@ -65,12 +69,47 @@ for path in sys.argv[2:]:
     open(os.path.join(sys.argv[1], os.path.basename(path) + ".json"), "w").write(json.dumps(doc, indent=2))
 PY
 
+# Sweep journals as `rockroll sweep --out` writes them (app/Journal.h): a header, finished
+# points (one with its summary and the state the next speed starts from, one failed), and
+# the same with a last line cut off by a kill.
+mkdir -p "$out/seeds/fuzz_journal"
+/usr/bin/python3 - "$out/seeds/fuzz_journal" <<'PY'
+import json, os, sys
+h = lambda x: float(x).hex()
+header = {"journal": "sweep", "version": 1, "identity": {"sweeps": [{"model": "reduced", "sweep": {
+          "from_mph": 13, "to_mph": 17, "step_mph": 0.5, "direction": "up", "fresh": False, "ramp_time_s": 1}}]},
+          "command": "rockroll sweep scenarios/70ton-loaded.toml --model reduced --out out"}
+summary = {k: 0.5 for k in ("speed_mph", "amplitude_in", "duration_s", "max_roll_deg", "steady_roll_amplitude_deg",
+           "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "min_wheel_load_ratio",
+           "max_side_bearing_load_lb", "max_center_plate_load_lb", "raw_max_wheel_load_lb", "raw_min_wheel_load_ratio",
+           "raw_max_side_bearing_load_lb", "raw_max_center_plate_load_lb", "static_wheel_load_lb",
+           "static_center_plate_load_lb", "center_plate_separation_longest_s", "center_plate_separation_total_s",
+           "wheel_lift_longest_s", "energy_balance_error", "max_wheel_unloading", "raw_max_wheel_unloading",
+           "max_l_over_v", "raw_max_l_over_v", "max_car_body_vertical_accel_g", "raw_max_car_body_vertical_accel_g",
+           "max_car_body_lateral_accel_g", "raw_max_car_body_lateral_accel_g", "sim_time_s", "wall_time_s")}
+summary.update({"model": "reduced", "car": "70-ton loaded", "regime": "rocking", "stopped_at_s": None,
+                "stop_reason": None, "filter": "none", "steps": 1234, "max_l_over_v": None,
+                "trucks": [{"truck": "F", "max_center_plate_load_lb": 1.5e4, "min_center_plate_load_lb": 0.0,
+                            "max_side_bearing_L_load_lb": 2e3, "max_side_bearing_R_load_lb": 0.0}],
+                "criteria": [{"name": "wheel unloading", "value": 0.4, "limit": 0.9, "unit": "1"}]})
+nxt = {"from": {"model": "reduced", "y": [h(0.01), h(-0.25), h(1e-300), "inf"], "distance_m": h(123.25),
+       "speed_m_per_s": h(6.7056)}, "ramp_time_s": h(0), "static_reference": [h(9.81), h(-1.5)]}
+points = [{"sweep": 0, "direction": "up", "index": 0, "speed_mph": 13, "speed_mph_hex": h(13), "start": "rest",
+           "failed": False, "summary": summary, "next": nxt},
+          {"sweep": 0, "direction": "up", "index": 1, "speed_mph": 13.5, "speed_mph_hex": h(13.5),
+           "start": "previous", "failed": True, "error": "numerical failure at t = 1.5 s",
+           "next": {"from": None, "ramp_time_s": h(1), "static_reference": []}}]
+lines = [json.dumps(header)] + [json.dumps(p) for p in points]
+with open(os.path.join(sys.argv[1], "sweep.jsonl"), "w") as f: f.write("\n".join(lines) + "\n")
+with open(os.path.join(sys.argv[1], "torn.jsonl"), "w") as f: f.write("\n".join(lines[:2]) + "\n" + lines[2][:40])
+PY
+
 printf 'harness\texecutions\texec_per_s\tseconds\tresult\n' > "$out/summary.tsv"
 fuzz_one() {  # fuzz_one HARNESS: one line of summary.tsv; returns 1 on a finding
   local h=$1 seeds=() start rc seconds execs rate result
   mkdir -p "$out/crashes/$h" "$out/corpus/$h" "$out/seeds/$h"
   [ -n "$(ls -A "$out/seeds/$h")" ] && seeds=("$out/seeds/$h")
-  [ ${#seeds[@]} -eq 0 ] && seeds=("$out/seeds/fuzz_scenario_text")  # a harness added later (fuzz_journal): text seeds
+  [ ${#seeds[@]} -eq 0 ] && seeds=("$out/seeds/fuzz_scenario_text")  # a harness without seeds of its own: text seeds
   echo "fuzz: $h, $runs runs" >&2
   start=$(date +%s.%N)
   rc=0
