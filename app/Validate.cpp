@@ -8,6 +8,7 @@
 #include "app/ValidateSections.h"
 
 #include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <cstdio>
 #include <fmt/format.h>
@@ -70,7 +71,23 @@ int validateCommand(const ValidateOptions& o) {
     nlohmann::ordered_json meta;
     const std::string commit = getCommit();
     std::string md;
-    auto step = [&](const char* what) { fmt::print(stderr, "validate: {}\n", what); };
+    // Each phase's wall and CPU minutes go to stderr, validation.json and the header, so a
+    // slow validate shows where its time went (issue 10: the full run must stay under 20 min).
+    std::vector<std::pair<std::string, PhaseTime>> phases;
+    auto wallMinutes = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60; };
+    auto cpuMinutes = [] { return double(std::clock()) / CLOCKS_PER_SEC / 60; };
+    const double cpu0 = cpuMinutes();
+    double phaseWall = 0, phaseCpu = cpu0;
+    auto endPhase = [&] {
+        if (phases.empty()) return;
+        phases.back().second = {wallMinutes() - phaseWall, cpuMinutes() - phaseCpu};
+    };
+    auto step = [&](const char* what) {
+        endPhase();
+        phaseWall = wallMinutes(), phaseCpu = cpuMinutes();
+        phases.push_back({what, {}});
+        fmt::print(stderr, "validate: {} (at {:.1f} min)\n", what, phaseWall);
+    };
     // A section that throws is reported (stderr, REPORT.md, validation.json) and the
     // others still run; validate then exits 4.
     std::vector<std::string> failedSections;
@@ -109,14 +126,26 @@ int validateCommand(const ValidateOptions& o) {
     md += section("attribution", [&] { return makeAttributionSection(s, meta); });
     if (!failedSections.empty()) meta["failed_sections"] = failedSections;
 
-    writeJsonFile(s.out / "validation.json", meta);
     step("plots");
+    // The plots are drawn from validation.json, so it is written before them with the
+    // phases so far; it is rewritten below with the plots' own time.
+    auto writePhases = [&] {
+        meta["phases"] = nlohmann::ordered_json::array();
+        for (const auto& [name, t] : phases)
+            meta["phases"].push_back({{"phase", name}, {"wall_min", t.wallMinutes}, {"cpu_min", t.cpuMinutes}});
+        meta["wall_min"] = wallMinutes();
+        meta["cpu_min"] = cpuMinutes() - cpu0;
+        writeJsonFile(s.out / "validation.json", meta);
+    };
+    writePhases();
     if (const int rc = runPlotPackage({"validate", s.out.string()}); rc != 0)
         throw std::runtime_error(fmt::format("plotting failed: {} -m rockroll_plots validate {} exited {}", python,
                                              s.out.string(), rc));
+    endPhase();
+    writePhases();
 
-    const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60;
-    const std::string header = makeHeader(s, commit, minutes);
+    const double minutes = wallMinutes();
+    const std::string header = makeHeader(s, commit, minutes, phases);
     writeAtomically(s.out / "REPORT.md", [&](std::ostream& out) { out << header << md; });
     fmt::print("wrote {} ({:.1f} min)\n", (s.out / "REPORT.md").string(), minutes);
     if (!failedSections.empty()) {

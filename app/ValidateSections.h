@@ -63,7 +63,13 @@ struct PreviousReport {
 // ---- the sections, in report order (file) ------------------------------------------
 
 /// Title, provenance and the quick/full note (ValidateHeader.cpp).
-std::string makeHeader(const Settings& s, const std::string& commit, double minutes);
+/// Wall and CPU (this process and its threads) minutes of one validate phase.
+struct PhaseTime {
+    double wallMinutes = 0;
+    double cpuMinutes = 0;
+};
+std::string makeHeader(const Settings& s, const std::string& commit, double minutes,
+                       const std::vector<std::pair<std::string, PhaseTime>>& phases);
 /// 1. Time histories of the default case (ValidateTimeHistories.cpp).
 std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& meta);
 /// What moved since the previous report (ValidateChanges.cpp).

@@ -6,6 +6,7 @@
 #include "tests/PlotSidecar.h"
 #include "tests/TestTmp.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -266,6 +267,25 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     // Nothing half-written is left behind.
     for (const auto& e : std::filesystem::directory_iterator(out))
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+
+    // The phase times read back: every phase once, in order, none negative, and together
+    // no more than the whole run; the header lists the same phases.
+    const nlohmann::json meta = nlohmann::json::parse(readFile((out / "validation.json").string()));
+    ASSERT_TRUE(meta.contains("phases") && meta["phases"].is_array());
+    std::vector<std::string> names;
+    double wallSum = 0;
+    for (const auto& p : meta["phases"]) {
+        names.push_back(p.at("phase").get<std::string>());
+        EXPECT_GE(p.at("wall_min").get<double>(), 0) << names.back();
+        EXPECT_GE(p.at("cpu_min").get<double>(), 0) << names.back();
+        wallSum += p.at("wall_min").get<double>();
+        EXPECT_NE(report.find(fmt::format("{} {:.1f} (", names.back(), p.at("wall_min").get<double>())), std::string::npos)
+            << names.back() << " is not in REPORT.md's phase line";
+    }
+    EXPECT_EQ(join(names), join({"time histories", "speed sweeps", "describing function", "Tables 3 and 4", "modes",
+                                 "convergence", "added degrees of freedom", "attribution", "plots"}));
+    EXPECT_LE(wallSum, meta.at("wall_min").get<double>() + 1e-9);
+    EXPECT_GT(meta.at("cpu_min").get<double>(), 0);
 
     const ReadBack n = checkValidateOutput(out, true);
     // Quick run: 4 time histories, 6 sweeps, 1 steady; a time-history plot, 2 per sweep case, 1 steady.
