@@ -49,6 +49,7 @@ struct SweepResult {
     std::string model;
     std::vector<SweepPoint> up, down;
     double jumpUpMph = NAN, jumpDownMph = NAN;
+    CriteriaLimits criteria;  ///< the [criteria] of the scenario the sweep ran (section 9 judges by them)
 };
 
 /// Describing-function solutions per amplitude (70-ton loaded), sections 3 and 5.

@@ -59,6 +59,7 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
         SweepResult r;
         r.c = c;
         r.model = m;
+        r.criteria = loadCar(c.car).criteria;
         results.push_back(r);
         for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
             SweepSpec spec;

@@ -2,6 +2,7 @@
 // the quick run regenerates a complete report whose every file reads back: each
 // CSV as an RFC 4180 table with its required columns by name, each JSON, and each
 // plot's sidecar (python/rockroll_plots (figures.py)) against the CSV columns it says it drew.
+#include "app/ValidateSections.h"
 #include "tests/CsvReader.h"
 #include "tests/PlotSidecar.h"
 #include "tests/TestTmp.h"
@@ -372,4 +373,34 @@ TEST(Validate, ReadBackChecksCatchWrongFiles) {
     const std::string wrong = join(checkPlotColumns(dir, "steady_70ton-loaded_0.75in.png"));
     EXPECT_NE(wrong.find("draws max_side_bearing_load_lb against speed_mph from steady_70ton-loaded_0.75in.csv, which it "
                          "should not"), std::string::npos) << wrong;
+}
+
+// Section 9 judges each sweep by its own scenario's [criteria] (with validate's two
+// options on top), not by the first sweep's: a car with a tighter vertical-acceleration
+// limit fails where the same point passes under the default limits, and is marked.
+TEST(Validate, CriteriaSectionJudgesEachSweepByItsOwnLimits) {
+    using namespace rockroll;
+    using namespace rockroll::app;
+    Settings s;
+    s.rollLimitDeg = 6;
+    s.wheelLoadLimit = 0.1;
+    SweepPoint p;
+    p.speedMph = 15;
+    p.direction = "up";
+    p.summary.peakToPeakRollDeg = 2;
+    p.summary.maxWheelUnloading = 0.5;
+    p.summary.maxCarBodyVerticalAccelG = 0.5;
+    p.summary.maxCarBodyLateralAccelG = 0.1;
+    SweepResult ownDefaults;
+    ownDefaults.c = {"car-a", 0.75, 10, 20, ""};
+    ownDefaults.model = "halfcar";
+    ownDefaults.up = {p};
+    SweepResult tight = ownDefaults;
+    tight.c.car = "car-b";
+    tight.criteria.carBodyVerticalAccelG = 0.4;
+    const std::string md = makeCriteriaSection(s, {ownDefaults, tight});
+    EXPECT_NE(md.find("| car-a | 0.75 | halfcar | up | none | none | n/e | none | none |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| car-b* | 0.75 | halfcar | up | none | none | n/e | 15 | none |"), std::string::npos) << md;
+    EXPECT_NE(md.find("car-b: car_body_vertical_accel ≤ 0.4 g;"), std::string::npos) << md;
+    EXPECT_EQ(md.find("car-a:"), std::string::npos) << md;
 }
