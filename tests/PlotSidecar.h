@@ -1,4 +1,6 @@
 #pragma once
+
+#include "tests/TextFile.h"
 // Reads back a plot's sidecar NAME.png.json (python/rockroll_plots/figures.py save):
 // each line it lists must come from the CSV columns it names, rows and values alike.
 // Used by the validate tests and the `rockroll plot` tests.
@@ -16,13 +18,6 @@
 
 namespace rockroll::test {
 
-inline std::string readSidecarText(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 /// Checks DIR/PNG.json against the CSV files it names (relative to csvDir, default
 /// DIR): every line's x and y columns exist, the rows it selects (`where` matches,
 /// x and y not empty) are as many as it drew, and its sampled drawn values are those
@@ -35,7 +30,7 @@ inline std::vector<std::string> checkPlotSidecar(const std::filesystem::path& di
         return {png + ": no sidecar " + png + ".json (python/rockroll_plots/figures.py writes one)"};
     nlohmann::json side;
     try {
-        side = nlohmann::json::parse(readSidecarText(dir / (png + ".json")));
+        side = nlohmann::json::parse(readTextFile(dir / (png + ".json")));
     } catch (const std::exception& e) {
         return {png + ".json: " + e.what()};
     }
@@ -46,7 +41,7 @@ inline std::vector<std::string> checkPlotSidecar(const std::filesystem::path& di
                           y = l.at("y").get<std::string>();
         const std::string what = png + ": " + y + " against " + x + " from " + csv;
         if (!tables.count(csv)) try {
-                tables[csv] = parseCsvTable(readSidecarText(data / csv));
+                tables[csv] = parseCsvTable(readTextFile(data / csv));
             } catch (const std::exception& e) {
                 errors.push_back(what + ": " + e.what());
                 continue;

@@ -1,6 +1,7 @@
 // The engineer's workflow on the command line (issues 12 item 4 and 13 items 1-2):
 // --set KEY=VALUE on every command, --out DIR on run, sweep, steady and modes (every
 // file read back here), --force, and SIGINT/SIGTERM leaving nothing half-written.
+#include "tests/CliRunner.h"
 #include "tests/CsvReader.h"
 #include "tests/TestTmp.h"
 
@@ -13,7 +14,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <spawn.h>
-#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -25,28 +25,10 @@ namespace {
 
 const std::string kScenario = std::string(ROCKROLL_SCENARIO_DIR) + "/70ton-loaded.toml";
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-struct Outcome {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-/// `rockroll ARGS` (shell words) in `dir`.
-Outcome runCli(const fs::path& dir, const std::string& args) {
-    const std::string cmd = "cd '" + dir.string() + "' && '" + ROCKROLL_BIN + "' " + args + " > stdout.txt 2> stderr.txt";
-    const int status = std::system(cmd.c_str());
-    Outcome o;
-    o.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = readText(dir / "stdout.txt");
-    o.err = readText(dir / "stderr.txt");
-    return o;
-}
+using rockroll::test::CliOutcome;
+using rockroll::test::getExitCode;
+using rockroll::test::readTextFile;
+using rockroll::test::runRockroll;
 
 /// Every number of a CSV table equals the same key of the JSON records, bit for bit
 /// (the CSV writes the shortest text that reads back to the double); text cells equal text.
@@ -75,9 +57,9 @@ void expectCsvMatchesJson(const rockroll::test::CsvTable& table, const nlohmann:
 TEST(CliWorkflow, SetChangesTheRunAndAppearsInItsProvenance) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     const std::string base = "run '" + kScenario + "' --model halfcar --duration-s 1 --json";
-    const Outcome plain = runCli(dir, base + " --out plain");
+    const CliOutcome plain = runRockroll(dir, base + " --out plain");
     ASSERT_EQ(plain.exitCode, 0) << plain.err;
-    const Outcome set = runCli(dir, base + " --out set --set car.side_bearing_clearance=\"0.25 in\" "
+    const CliOutcome set = runRockroll(dir, base + " --out set --set car.side_bearing_clearance=\"0.25 in\" "
                                             "--set run.speed=\"14 mph\"");
     ASSERT_EQ(set.exitCode, 0) << set.err;
     const auto a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(set.out);
@@ -93,15 +75,15 @@ TEST(CliWorkflow, SetChangesTheRunAndAppearsInItsProvenance) {
     EXPECT_NEAR(prov.at("car_parameters").at("side_bearing_clearance").at("value").get<double>(), 0.25, 1e-12);
     EXPECT_TRUE(a.at("provenance").at("overrides").empty());
     // The summary.json written is what --json printed.
-    EXPECT_EQ(nlohmann::json::parse(readText(dir / "set" / "summary.json")), b);
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(dir / "set" / "summary.json")), b);
     // Rerunning from that summary reproduces the run, overrides and all.
-    const Outcome again = runCli(dir, "run --from-summary set/summary.json --out again --json");
+    const CliOutcome again = runRockroll(dir, "run --from-summary set/summary.json --out again --json");
     ASSERT_EQ(again.exitCode, 0) << again.err;
     const auto c = nlohmann::json::parse(again.out);
     EXPECT_EQ(c.at("max_roll_deg"), b.at("max_roll_deg"));
     EXPECT_EQ(c.at("provenance").at("overrides"), prov.at("overrides"));
     // The text summary lists them too.
-    const Outcome text = runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out text "
+    const CliOutcome text = runRockroll(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out text "
                                        "--set run.speed=\"14 mph\"");
     ASSERT_EQ(text.exitCode, 0) << text.err;
     EXPECT_NE(text.out.find("--set run.speed = 14 mph"), std::string::npos) << text.out;
@@ -129,7 +111,7 @@ TEST(CliWorkflow, SetErrorsNameFlagKeyValueAndExpectedForm) {
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.args);
-        const Outcome o = runCli(dir, c.args);
+        const CliOutcome o = runRockroll(dir, c.args);
         EXPECT_EQ(o.exitCode, 2) << o.err;
         for (const auto& e : c.expect) EXPECT_NE(o.err.find(e), std::string::npos) << e << "\n" << o.err;
         EXPECT_TRUE(o.out.empty()) << o.out;
@@ -139,27 +121,27 @@ TEST(CliWorkflow, SetErrorsNameFlagKeyValueAndExpectedForm) {
 TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     {
-        const Outcome o = runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.5 --out run");
+        const CliOutcome o = runRockroll(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.5 --out run");
         ASSERT_EQ(o.exitCode, 0) << o.err;
-        const auto table = rockroll::test::parseCsvTable(readText(dir / "run" / "history.csv"));
+        const auto table = rockroll::test::parseCsvTable(readTextFile(dir / "run" / "history.csv"));
         EXPECT_GE(table.rows.size(), 200u);  // 0.5 s at 500 Hz
         const auto t = table.numbers(table.columns.at(0));
         EXPECT_NEAR(t.back(), 0.5, 1e-9);
-        const auto summary = nlohmann::json::parse(readText(dir / "run" / "summary.json"));
+        const auto summary = nlohmann::json::parse(readTextFile(dir / "run" / "summary.json"));
         EXPECT_EQ(summary.at("duration_s"), 0.5);
     }
     {
-        const Outcome o = runCli(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 15 "
+        const CliOutcome o = runRockroll(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 15 "
                                         "--step-mph 1 --duration-s 1 --direction up --out sweep "
                                         "--set car.side_bearing_clearance=\"0.25 in\"");
         ASSERT_EQ(o.exitCode, 0) << o.err;
-        const auto doc = nlohmann::json::parse(readText(dir / "sweep" / "sweep.json"));
+        const auto doc = nlohmann::json::parse(readTextFile(dir / "sweep" / "sweep.json"));
         const auto& json = doc.at("points");
         ASSERT_EQ(json.size(), 2u);
         ASSERT_EQ(doc.at("jumps").size(), 1u);  // one sweep: up
         EXPECT_EQ(doc.at("jumps")[0].at("direction"), "up");
         EXPECT_EQ(json[0].at("provenance").at("overrides")[0].at("key"), "car.side_bearing_clearance");
-        const auto table = rockroll::test::parseCsvTable(readText(dir / "sweep" / "sweep.csv"));
+        const auto table = rockroll::test::parseCsvTable(readTextFile(dir / "sweep" / "sweep.csv"));
         EXPECT_EQ(table.find("provenance"), -1);
         ASSERT_NE(table.find("speed_mph"), -1);
         EXPECT_EQ(table.numbers("speed_mph"), (std::vector<double>{14, 15}));
@@ -187,10 +169,10 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
         expectCsvMatchesJson(table, flat);
     }
     {
-        const Outcome o = runCli(dir, "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none "
+        const CliOutcome o = runRockroll(dir, "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none "
                                         "--out steady");
         ASSERT_EQ(o.exitCode, 0) << o.err;
-        const auto json = nlohmann::json::parse(readText(dir / "steady" / "steady.json"));
+        const auto json = nlohmann::json::parse(readTextFile(dir / "steady" / "steady.json"));
         nlohmann::json records = nlohmann::json::array();
         for (size_t b = 0; b < json.at("branches").size(); ++b)
             for (auto p : json.at("branches")[b].at("points")) {
@@ -199,14 +181,14 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
                 records.push_back(p);
             }
         ASSERT_GT(records.size(), 3u);
-        expectCsvMatchesJson(rockroll::test::parseCsvTable(readText(dir / "steady" / "steady.csv")), records);
+        expectCsvMatchesJson(rockroll::test::parseCsvTable(readTextFile(dir / "steady" / "steady.csv")), records);
     }
     {
-        const Outcome o = runCli(dir, "modes '" + kScenario + "' --model halfcar --out modes");
+        const CliOutcome o = runRockroll(dir, "modes '" + kScenario + "' --model halfcar --out modes");
         ASSERT_EQ(o.exitCode, 0) << o.err;
-        const auto json = nlohmann::json::parse(readText(dir / "modes" / "modes.json"));
+        const auto json = nlohmann::json::parse(readTextFile(dir / "modes" / "modes.json"));
         ASSERT_FALSE(json.at("modes").empty());
-        const auto table = rockroll::test::parseCsvTable(readText(dir / "modes" / "modes.csv"));
+        const auto table = rockroll::test::parseCsvTable(readTextFile(dir / "modes" / "modes.csv"));
         expectCsvMatchesJson(table, json.at("modes"));
         EXPECT_GT(table.numbers("frequency_hz").front(), 0);
     }
@@ -219,28 +201,28 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
 TEST(CliWorkflow, ExistingNonEmptyDirectoryNeedsForce) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     const std::string run = "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out res";
-    ASSERT_EQ(runCli(dir, run).exitCode, 0);
+    ASSERT_EQ(runRockroll(dir, run).exitCode, 0);
     std::ofstream(dir / "res" / "notes.txt") << "mine\n";
-    const std::string before = readText(dir / "res" / "summary.json");
-    const Outcome refused = runCli(dir, run + " --speed-mph 14");
+    const std::string before = readTextFile(dir / "res" / "summary.json");
+    const CliOutcome refused = runRockroll(dir, run + " --speed-mph 14");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;
     EXPECT_NE(refused.err.find("--out res: the directory exists and is not empty"), std::string::npos) << refused.err;
     EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
-    EXPECT_EQ(readText(dir / "res" / "summary.json"), before);
+    EXPECT_EQ(readTextFile(dir / "res" / "summary.json"), before);
     EXPECT_TRUE(fs::exists(dir / "res" / "notes.txt"));
     // The same for the other commands, before they compute anything.
-    const Outcome modes = runCli(dir, "modes '" + kScenario + "' --out res");
+    const CliOutcome modes = runRockroll(dir, "modes '" + kScenario + "' --out res");
     EXPECT_EQ(modes.exitCode, 2) << modes.err;
     // --force replaces the directory as a whole.
-    const Outcome forced = runCli(dir, run + " --speed-mph 14 --force");
+    const CliOutcome forced = runRockroll(dir, run + " --speed-mph 14 --force");
     ASSERT_EQ(forced.exitCode, 0) << forced.err;
-    EXPECT_NE(readText(dir / "res" / "summary.json"), before);
+    EXPECT_NE(readTextFile(dir / "res" / "summary.json"), before);
     EXPECT_FALSE(fs::exists(dir / "res" / "notes.txt"));
     EXPECT_FALSE(fs::exists(dir / "res.partial"));
     EXPECT_FALSE(fs::exists(dir / "res.replaced"));
     // An empty directory is fine without --force.
     fs::create_directory(dir / "empty");
-    EXPECT_EQ(runCli(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out empty").exitCode, 0);
+    EXPECT_EQ(runRockroll(dir, "run '" + kScenario + "' --model halfcar --duration-s 0.2 --out empty").exitCode, 0);
     EXPECT_TRUE(fs::exists(dir / "empty" / "summary.json"));
 }
 
@@ -255,14 +237,14 @@ TEST(CliWorkflow, AnOutputThatCannotBeWrittenExits2) {
           "steady '" + kScenario + "' --from-mph 12 --to-mph 14 --stability none --out afile/res",
           "modes '" + kScenario + "' --model halfcar --out afile/res"}) {
         SCOPED_TRACE(args);
-        const Outcome o = runCli(dir, args);
+        const CliOutcome o = runRockroll(dir, args);
         EXPECT_EQ(o.exitCode, 2) << o.err;
         EXPECT_NE(o.err.find("cannot write the output: --out afile/res: cannot create the directory afile/res.partial"),
                   std::string::npos)
             << o.err;
         EXPECT_EQ(o.out, "");
     }
-    EXPECT_EQ(readText(dir / "afile"), "a file, not a directory\n");
+    EXPECT_EQ(readTextFile(dir / "afile"), "a file, not a directory\n");
 }
 
 // A shipped data file that cannot be read (here the report's numbers, mit1976.toml, through
@@ -273,10 +255,8 @@ TEST(CliWorkflow, ABrokenDataFileExits2) {
     std::ofstream(dir / "mit1976.toml") << "[report]\nyear = { value = 1976, unit = \"\"\n";
     const std::string cmd = "cd '" + dir.string() + "' && ROCKROLL_MIT1976='" + (dir / "mit1976.toml").string() +
                             "' '" + ROCKROLL_BIN + "' validate --quick --out out > stdout.txt 2> stderr.txt";
-    const int status = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 2);
-    const std::string err = readText(dir / "stderr.txt");
+    EXPECT_EQ(getExitCode(std::system(cmd.c_str())), 2);
+    const std::string err = readTextFile(dir / "stderr.txt");
     EXPECT_NE(err.find("rockroll: data file error: " + (dir / "mit1976.toml").string() + ": "), std::string::npos) << err;
     EXPECT_NE(err.find("(line 2)"), std::string::npos) << err;
 }
@@ -306,10 +286,9 @@ TEST(CliWorkflow, InterruptLeavesNothingHalfWritten) {
         ASSERT_EQ(kill(pid, sig), 0);
         int status = 0;
         ASSERT_EQ(waitpid(pid, &status, 0), pid);
-        ASSERT_TRUE(WIFEXITED(status));
-        EXPECT_EQ(WEXITSTATUS(status), 130) << readText(dir / "stderr.txt");
+        EXPECT_EQ(getExitCode(status), 130) << readTextFile(dir / "stderr.txt");
         EXPECT_FALSE(fs::exists(partial));
         EXPECT_FALSE(fs::exists(out));
-        EXPECT_NE(readText(dir / "stderr.txt").find("interrupted"), std::string::npos);
+        EXPECT_NE(readTextFile(dir / "stderr.txt").find("interrupted"), std::string::npos);
     }
 }

@@ -19,6 +19,7 @@
 //  * Everything else (the default case, sweeps, validate, steady with stability) is
 //    parsed only: ROCKROLL_PARSE_ONLY=1 makes rockroll check the command line
 //    (flags, values, files) and exit 0 without running.
+#include "tests/CliRunner.h"
 #include "tests/CsvReader.h"
 #include "tests/TestTmp.h"
 
@@ -37,12 +38,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rockroll::test::CliOutcome;
+using rockroll::test::readTextFile;
 
 struct DocCommand {
     std::string file;  ///< README.md, docs/x.md
@@ -124,30 +121,19 @@ std::vector<DocCommand> extractAll() {
     files.insert(files.end(), docs.begin(), docs.end());
     std::vector<DocCommand> all;
     for (const auto& f : files) {
-        const auto c = extractCommands(fs::relative(f, src).string(), readFile(f));
+        const auto c = extractCommands(fs::relative(f, src).string(), readTextFile(f));
         all.insert(all.end(), c.begin(), c.end());
     }
     return all;
 }
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-/// Runs `args` (the text after "rockroll") through the binary in `dir`.
-Outcome runRockroll(const fs::path& dir, const std::string& args, bool parseOnly) {
+/// Runs `args` (the text after "rockroll") through the binary in `dir`, where
+/// scenarios/ links to the source tree's, as the docs' relative paths expect.
+CliOutcome runDocCommand(const fs::path& dir, const std::string& args, bool parseOnly) {
     fs::create_directories(dir);
     const fs::path scen = dir / "scenarios";
     if (!fs::exists(scen)) fs::create_directory_symlink(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios", scen);
-    const std::string cmd = "cd '" + dir.string() + "' && " + (parseOnly ? "ROCKROLL_PARSE_ONLY=1 " : "") + "'" +
-                            ROCKROLL_BIN + "' " + args + " > stdout.txt 2> stderr.txt";
-    const int status = std::system(cmd.c_str());
-    Outcome o;
-    o.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = readFile(dir / "stdout.txt");
-    o.err = readFile(dir / "stderr.txt");
-    return o;
+    return rockroll::test::runRockroll(dir, args, parseOnly ? "ROCKROLL_PARSE_ONLY=1" : "");
 }
 
 const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot", "study", "merge"};
@@ -184,10 +170,10 @@ TEST(DocCommands, ExtractionFindsInlineBlockAndWrappedCommands) {
 // The check can fail: a flag the CLI does not know is rejected in parse-only mode.
 TEST(DocCommands, ParseOnlyRejectsAnUnknownFlag) {
     const fs::path dir = rockroll::test::makeTestTempDir();
-    const Outcome bad = runRockroll(dir, "steady scenarios/70ton-loaded.toml --no-stability", true);
+    const CliOutcome bad = runDocCommand(dir, "steady scenarios/70ton-loaded.toml --no-stability", true);
     EXPECT_EQ(bad.exitCode, 2) << bad.err;  // every command-line error is bad input (README, exit codes)
     EXPECT_NE(bad.err.find("The following argument was not expected"), std::string::npos) << bad.err;
-    const Outcome good = runRockroll(dir, "steady scenarios/70ton-loaded.toml --stability none", true);
+    const CliOutcome good = runDocCommand(dir, "steady scenarios/70ton-loaded.toml --stability none", true);
     EXPECT_EQ(good.exitCode, 0) << good.err;
     EXPECT_TRUE(good.out.empty()) << "parse-only must not run: " << good.out;
 }
@@ -210,7 +196,7 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
         std::vector<std::string> t = split(c.text);
         std::string args = c.text.substr(std::string("rockroll").size());
         if (t.size() == 2 && has(kSubcommands, t[1])) {
-            const Outcome o = runRockroll(dir, args + " --help", false);
+            const CliOutcome o = runDocCommand(dir, args + " --help", false);
             EXPECT_EQ(o.exitCode, 0) << o.err;
             ++named;
             continue;
@@ -220,13 +206,13 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
                          (sub == "steady" && c.text.find("--stability none") != std::string::npos);
         if (sub == "run" && !has(t, "--duration-s")) args += " --duration-s 0.2";
         // Long commands: their flags at least.
-        const Outcome p = runRockroll(dir, args, true);
+        const CliOutcome p = runDocCommand(dir, args, true);
         EXPECT_EQ(p.exitCode, 0) << "parse-only: " << p.err;
         if (!run) {
             ++parsed;
             continue;
         }
-        const Outcome o = runRockroll(dir, args, false);
+        const CliOutcome o = runDocCommand(dir, args, false);
         ++ran;
         EXPECT_EQ(o.exitCode, c.expectedExit) << o.err;
         if (has(t, "--json")) {
@@ -238,7 +224,7 @@ TEST(DocCommands, EveryQuotedCommandRuns) {
             if (e.path().filename() == "scenarios") continue;
             if (e.path().filename() != "history.csv") continue;
             try {
-                const auto table = rockroll::test::parseCsvTable(readFile(e.path()));
+                const auto table = rockroll::test::parseCsvTable(readTextFile(e.path()));
                 EXPECT_FALSE(table.rows.empty()) << e.path();
                 for (const auto& col : table.columns) (void)table.numbers(col);
             } catch (const std::exception& x) {

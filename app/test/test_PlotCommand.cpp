@@ -5,6 +5,7 @@
 // with the CSV's values (tests/PlotSidecar.h); PNG and SVG exist and are not empty.
 // Bad input (not an output, a malformed file, no matplotlib, an existing plots/)
 // exits 2 and leaves no plots directory behind.
+#include "tests/CliRunner.h"
 #include "tests/CsvReader.h"
 #include "tests/PlotSidecar.h"
 #include "tests/TestTmp.h"
@@ -23,28 +24,13 @@
 namespace fs = std::filesystem;
 using rockroll::test::checkPlotSidecar;
 using rockroll::test::parseCsvTable;
-using rockroll::test::readSidecarText;
+using rockroll::test::CliOutcome;
+using rockroll::test::readTextFile;
+using rockroll::test::runRockroll;
 
 namespace {
 
 const std::string kScenario = std::string(ROCKROLL_SCENARIO_DIR) + "/70ton-loaded.toml";
-
-struct Outcome {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-/// `[ENV] rockroll ARGS` (shell words) in `dir`.
-Outcome runCli(const fs::path& dir, const std::string& args, const std::string& env = "") {
-    const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + ROCKROLL_BIN + "' " + args +
-                            " > stdout.txt 2> stderr.txt";
-    const int status = std::system(cmd.c_str());
-    Outcome o;
-    o.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = readSidecarText(dir / "stdout.txt");
-    o.err = readSidecarText(dir / "stderr.txt");
-    return o;
-}
 
 std::string join(const std::vector<std::string>& v) {
     std::string s;
@@ -58,7 +44,7 @@ using Drawn = std::tuple<std::string, std::string, std::string, double>;
 /// Plots `out` and checks every figure: PNG and SVG exist and are not empty, the
 /// sidecar reads back against the CSV (in `out`). Returns the figures' sidecars by PNG name.
 std::map<std::string, nlohmann::json> plotAndReadBack(const fs::path& out) {
-    const Outcome o = runCli(out.parent_path(), "plot '" + out.string() + "'");
+    const CliOutcome o = runRockroll(out.parent_path(), "plot '" + out.string() + "'");
     EXPECT_EQ(o.exitCode, 0) << o.err;
     std::map<std::string, nlohmann::json> sidecars;
     EXPECT_FALSE(fs::exists(out / "plots.partial"));
@@ -73,7 +59,7 @@ std::map<std::string, nlohmann::json> plotAndReadBack(const fs::path& out) {
         const fs::path svg = fs::path(e.path()).replace_extension(".svg");
         EXPECT_TRUE(fs::exists(svg) && fs::file_size(svg) > 0) << svg;
         EXPECT_EQ(join(checkPlotSidecar(out / "plots", png, out)), "") << png;
-        sidecars[png] = nlohmann::json::parse(readSidecarText(out / "plots" / (png + ".json")));
+        sidecars[png] = nlohmann::json::parse(readTextFile(out / "plots" / (png + ".json")));
         EXPECT_EQ(sidecars[png].at("svg"), svg.filename().string());
     }
     EXPECT_FALSE(sidecars.empty()) << "no plots in " << (out / "plots");
@@ -106,11 +92,11 @@ std::set<Drawn> expectedHistoryLines(const std::vector<std::string>& header) {
 
 void checkRunPlot(const std::string& model, size_t wheelLifts) {
     const fs::path dir = rockroll::test::makeTestTempDir();
-    const Outcome run = runCli(dir, "run '" + kScenario + "' --model " + model + " --duration-s 1 --out run");
+    const CliOutcome run = runRockroll(dir, "run '" + kScenario + "' --model " + model + " --duration-s 1 --out run");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto sidecars = plotAndReadBack(dir / "run");
     ASSERT_EQ(sidecars.count("timehistory.png"), 1u);
-    const auto header = parseCsvTable(readSidecarText(dir / "run" / "history.csv")).columns;
+    const auto header = parseCsvTable(readTextFile(dir / "run" / "history.csv")).columns;
     const std::set<Drawn> expected = expectedHistoryLines(header), drawn = drawnLines(sidecars.at("timehistory.png"));
     EXPECT_EQ(drawn, expected);
     size_t lifts = 0;
@@ -127,7 +113,7 @@ TEST(PlotCommand, RunOfTheFullCarDrawsEveryWheel) { checkRunPlot("fullcar", 8); 
 
 TEST(PlotCommand, SweepUpAndDownWithItsJumpSpeeds) {
     const fs::path dir = rockroll::test::makeTestTempDir();
-    const Outcome sweep = runCli(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 17 --step-mph 1 "
+    const CliOutcome sweep = runRockroll(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 17 --step-mph 1 "
                                       "--duration-s 2 --direction both --out sweep");
     ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
     const auto sidecars = plotAndReadBack(dir / "sweep");
@@ -149,11 +135,11 @@ TEST(PlotCommand, SweepUpAndDownWithItsJumpSpeeds) {
     EXPECT_EQ(directions, (std::set<std::string>{"up", "down"}));
 
     // The jumps of sweep.json: one per direction; each found one is marked at its speed on both roll panels.
-    const auto doc = nlohmann::json::parse(readSidecarText(dir / "sweep" / "sweep.json"));
+    const auto doc = nlohmann::json::parse(readTextFile(dir / "sweep" / "sweep.json"));
     const auto& jumps = doc.at("jumps");
     ASSERT_EQ(jumps.size(), 2u);
     // The rule, recomputed from sweep.csv: the largest rise going up, the largest fall coming down.
-    const auto table = parseCsvTable(readSidecarText(dir / "sweep" / "sweep.csv"));
+    const auto table = parseCsvTable(readTextFile(dir / "sweep" / "sweep.csv"));
     for (const auto& j : jumps) {
         std::vector<double> speed, amp;
         for (const auto& r : table.rows)
@@ -186,7 +172,7 @@ TEST(PlotCommand, SweepUpAndDownWithItsJumpSpeeds) {
 
 TEST(PlotCommand, Steady) {
     const fs::path dir = rockroll::test::makeTestTempDir();
-    const Outcome steady = runCli(dir, "steady '" + kScenario + "' --from-mph 14 --to-mph 15 --stability none --out steady");
+    const CliOutcome steady = runRockroll(dir, "steady '" + kScenario + "' --from-mph 14 --to-mph 15 --stability none --out steady");
     ASSERT_EQ(steady.exitCode, 0) << steady.err;
     const auto sidecars = plotAndReadBack(dir / "steady");
     ASSERT_EQ(sidecars.count("steady.png"), 1u);
@@ -197,7 +183,7 @@ TEST(PlotCommand, Steady) {
 
 TEST(PlotCommand, Modes) {
     const fs::path dir = rockroll::test::makeTestTempDir();
-    const Outcome modes = runCli(dir, "modes '" + kScenario + "' --model halfcar --out modes");
+    const CliOutcome modes = runRockroll(dir, "modes '" + kScenario + "' --model halfcar --out modes");
     ASSERT_EQ(modes.exitCode, 0) << modes.err;
     const auto sidecars = plotAndReadBack(dir / "modes");
     ASSERT_EQ(sidecars.count("modes.png"), 1u);
@@ -212,7 +198,7 @@ TEST(PlotCommand, StudyFixture) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     fs::copy(fs::path(ROCKROLL_SOURCE_DIR) / "tests/data/study-output", dir / "study");
     const auto sidecars = plotAndReadBack(dir / "study");
-    const auto study = nlohmann::json::parse(readSidecarText(dir / "study" / "study.json"));
+    const auto study = nlohmann::json::parse(readTextFile(dir / "study" / "study.json"));
     ASSERT_EQ(sidecars.size(), study.at("varied").size());
     for (const auto& v : study.at("varied")) {
         const std::string x = v.at("column"), png = "study_" + x + ".png";
@@ -233,19 +219,19 @@ TEST(PlotCommand, StudyFixture) {
 TEST(PlotCommand, BadInputExits2AndLeavesNoPlots) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     fs::create_directories(dir / "empty");
-    Outcome o = runCli(dir, "plot empty");
+    CliOutcome o = runRockroll(dir, "plot empty");
     EXPECT_EQ(o.exitCode, 2);
     EXPECT_NE(o.err.find("is not a rockroll output directory"), std::string::npos) << o.err;
     EXPECT_TRUE(fs::is_empty(dir / "empty"));
 
-    o = runCli(dir, "plot no-such-dir");
+    o = runRockroll(dir, "plot no-such-dir");
     EXPECT_EQ(o.exitCode, 2) << o.err;
 
     // A history without the center-plate channels.
     fs::create_directories(dir / "bad");
     std::ofstream(dir / "bad" / "history.csv") << "t_s,roll_deg\n0,0\n0.1,0.2\n";
     std::ofstream(dir / "bad" / "summary.json") << "{}\n";
-    o = runCli(dir, "plot bad");
+    o = runRockroll(dir, "plot bad");
     EXPECT_EQ(o.exitCode, 2);
     EXPECT_NE(o.err.find("history.csv: no center-plate column"), std::string::npos) << o.err;
     EXPECT_FALSE(fs::exists(dir / "bad" / "plots"));
@@ -253,14 +239,14 @@ TEST(PlotCommand, BadInputExits2AndLeavesNoPlots) {
 
     // The study fixture: plots once, then plots/ exists and needs --force.
     fs::copy(fs::path(ROCKROLL_SOURCE_DIR) / "tests/data/study-output", dir / "study");
-    ASSERT_EQ(runCli(dir, "plot study").exitCode, 0);
-    o = runCli(dir, "plot study");
+    ASSERT_EQ(runRockroll(dir, "plot study").exitCode, 0);
+    o = runRockroll(dir, "plot study");
     EXPECT_EQ(o.exitCode, 2);
     EXPECT_NE(o.err.find("--force"), std::string::npos) << o.err;
-    EXPECT_EQ(runCli(dir, "plot study --force").exitCode, 0);
+    EXPECT_EQ(runRockroll(dir, "plot study --force").exitCode, 0);
 
     // No Python at ROCKROLL_PYTHON; a Python without matplotlib (a stand-in package that fails to import).
-    o = runCli(dir, "plot study --force", "ROCKROLL_PYTHON=/no/such/python");
+    o = runRockroll(dir, "plot study --force", "ROCKROLL_PYTHON=/no/such/python");
     EXPECT_EQ(o.exitCode, 2);
     EXPECT_NE(o.err.find("ROCKROLL_PYTHON /no/such/python"), std::string::npos) << o.err;
     fs::create_directories(dir / "nompl" / "matplotlib");
@@ -270,7 +256,7 @@ TEST(PlotCommand, BadInputExits2AndLeavesNoPlots) {
         py << "#!/bin/sh\nexport PYTHONPATH='" << (dir / "nompl").string() << "':\"$PYTHONPATH\"\nexec /usr/bin/python3 \"$@\"\n";
     }
     fs::permissions(dir / "python-without-matplotlib", fs::perms::owner_all);
-    o = runCli(dir, "plot study --force", "ROCKROLL_PYTHON='" + (dir / "python-without-matplotlib").string() + "'");
+    o = runRockroll(dir, "plot study --force", "ROCKROLL_PYTHON='" + (dir / "python-without-matplotlib").string() + "'");
     EXPECT_EQ(o.exitCode, 2);
     EXPECT_NE(o.err.find("matplotlib is missing"), std::string::npos) << o.err;
     EXPECT_TRUE(fs::exists(dir / "study" / "plots" / "study_run.speed_mph.png")) << "the old plots are kept";

@@ -1,6 +1,8 @@
 // rockroll steady --stability none: no solution may be reported stable. JSON
 // gives "stable": null and "stability": "not computed"; the text table says
 // "not computed".
+#include "tests/CliRunner.h"
+
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -19,7 +21,7 @@ std::string capture(const std::string& cmd, int& exitCode) {
     size_t n;
     while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
     const int status = pclose(p);
-    exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    exitCode = rockroll::test::getExitCode(status);
     return out;
 }
 const std::string kSteady = std::string(ROCKROLL_BIN) + " steady '" + ROCKROLL_SCENARIO_DIR +

@@ -3,6 +3,7 @@
 // CSV as an RFC 4180 table with its required columns by name, each JSON, and each
 // plot's sidecar (python/rockroll_plots (figures.py)) against the CSV columns it says it drew.
 #include "app/ValidateSections.h"
+#include "tests/CliRunner.h"
 #include "tests/CsvReader.h"
 #include "tests/PlotSidecar.h"
 #include "tests/TestTmp.h"
@@ -29,12 +30,7 @@ using rockroll::test::parseCsvTable;
 using rockroll::test::parseNumber;
 using rockroll::test::checkPlotSidecar;
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rockroll::test::readTextFile;
 const std::string kSource = std::string(ROCKROLL_SCENARIO_DIR) + "/..";
 
 const std::vector<std::string> kHistoryColumns{"t_s",           "roll_deg",           "cross_level_F_in",
@@ -70,7 +66,7 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
     const std::string name = path.filename().string();
     CsvTable t;
     try {
-        t = parseCsvTable(readFile(path.string()));
+        t = parseCsvTable(readTextFile(path.string()));
     } catch (const std::exception& e) {
         return {name + ": " + e.what()};
     }
@@ -150,7 +146,7 @@ std::vector<std::string> checkPlotColumns(const fs::path& dir, const std::string
     if (!fs::exists(dir / (png + ".json"))) return {png + ": no sidecar " + png + ".json (python/rockroll_plots (figures.py) writes one)"};
     nlohmann::json side;
     try {
-        side = nlohmann::json::parse(readFile((dir / (png + ".json")).string()));
+        side = nlohmann::json::parse(readTextFile(dir / (png + ".json")));
     } catch (const std::exception& e) {
         return {png + ".json: " + e.what()};
     }
@@ -196,7 +192,7 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
             ++n.jsons;
             nlohmann::json j;
             try {
-                j = nlohmann::json::parse(readFile(e.path().string()));
+                j = nlohmann::json::parse(readTextFile(e.path().string()));
             } catch (const std::exception& x) {
                 ADD_FAILURE() << name << ": " << x.what();
                 continue;
@@ -236,7 +232,7 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
 }  // namespace
 
 TEST(Validate, CommittedReportNamesAnExistingCommit) {
-    const std::string report = readFile(kSource + "/results/REPORT.md");
+    const std::string report = readTextFile(kSource + "/results/REPORT.md");
     ASSERT_FALSE(report.empty()) << "results/REPORT.md is missing";
     std::smatch m;
     ASSERT_TRUE(std::regex_search(report, m, std::regex("Generated from commit ([0-9a-f]{40})")))
@@ -252,7 +248,7 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     const std::filesystem::path out = rockroll::test::makeTestTempDir() / "out";
     const std::string cmd = std::string(ROCKROLL_BIN) + " validate --quick --out '" + out.string() + "' > /dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
-    const std::string report = readFile((out / "REPORT.md").string());
+    const std::string report = readTextFile(out / "REPORT.md");
     for (const char* section : {"Time histories", "Roll against speed", "Table 3", "Table 4", "Describing-function",
                                 "Modes", "Convergence", "degrees of freedom", "criteria", "Attribution"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
@@ -271,7 +267,7 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
 
     // The phase times read back: every phase once, in order, none negative, and together
     // no more than the whole run; the header lists the same phases.
-    const nlohmann::json meta = nlohmann::json::parse(readFile((out / "validation.json").string()));
+    const nlohmann::json meta = nlohmann::json::parse(readTextFile(out / "validation.json"));
     ASSERT_TRUE(meta.contains("phases") && meta["phases"].is_array());
     std::vector<std::string> names;
     double wallSum = 0;
@@ -303,20 +299,18 @@ TEST(Validate, AFailedSectionIsReportedAndTheOthersStillRun) {
     const std::string cmd = "ROCKROLL_VALIDATE_FAIL_SECTION='time histories' " + std::string(ROCKROLL_BIN) +
                             " validate --quick --out '" + out.string() + "' > /dev/null 2> '" +
                             (dir / "stderr.txt").string() + "'";
-    const int status = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 4);
-    const std::string err = readFile((dir / "stderr.txt").string());
+    EXPECT_EQ(rockroll::test::getExitCode(std::system(cmd.c_str())), 4);
+    const std::string err = readTextFile(dir / "stderr.txt");
     EXPECT_NE(err.find("section \"time histories\" FAILED: injected failure"), std::string::npos) << err;
     EXPECT_NE(err.find("1 section(s) failed: time histories: injected failure"), std::string::npos) << err;
-    const std::string report = readFile((out / "REPORT.md").string());
+    const std::string report = readTextFile(out / "REPORT.md");
     EXPECT_NE(report.find("## time histories\n\n**This section failed:** injected failure"), std::string::npos);
     // The others ran and wrote their tables.
     for (const char* section : {"Roll against speed", "Table 3", "Table 4", "Describing-function", "Modes",
                                 "Convergence", "degrees of freedom", "criteria", "Attribution"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
     EXPECT_TRUE(fs::exists(out / "sweep_70ton-loaded_0.75in_reduced.csv"));
-    const nlohmann::json meta = nlohmann::json::parse(readFile((out / "validation.json").string()));
+    const nlohmann::json meta = nlohmann::json::parse(readTextFile(out / "validation.json"));
     ASSERT_TRUE(meta.contains("failed_sections")) << meta.dump();
     ASSERT_EQ(meta["failed_sections"].size(), 1u);
     EXPECT_NE(meta["failed_sections"][0].get<std::string>().find("time histories: injected failure"), std::string::npos);
@@ -326,7 +320,7 @@ TEST(Validate, AFailedSectionIsReportedAndTheOthersStillRun) {
 // by `rockroll validate`; a file written by an older writer fails here).
 TEST(Validate, CommittedResultsReadBack) {
     const fs::path results = fs::path(kSource) / "results";
-    const std::string report = readFile((results / "REPORT.md").string());
+    const std::string report = readTextFile(results / "REPORT.md");
     ASSERT_FALSE(report.empty()) << "results/REPORT.md is missing";
     const bool quick = report.find("`rockroll validate --quick`") != std::string::npos;
     const ReadBack n = checkValidateOutput(results, quick);

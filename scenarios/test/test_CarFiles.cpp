@@ -2,6 +2,7 @@
 // unit and its source; a scenario can also take a car file of its own.
 #include "scenarios/ScenarioLoader.h"
 #include "tests/TestCases.h"
+#include "tests/TextFile.h"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using test_cases::replaceOnce;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using rockroll::test::readTextFile;
 
 void expectSameCar(const CarParameters& a, const CarParameters& b, const std::string& what) {
     EXPECT_EQ(a.name, b.name) << what;
@@ -66,7 +64,7 @@ void expectCarError(const std::string& text, const std::string& needle) {
 }
 
 TEST(CarFiles, BadCarFilesAreRefusedNamingTheKey) {
-    const std::string good = readText(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/cars/70ton-loaded.toml");
+    const std::string good = readTextFile(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/cars/70ton-loaded.toml");
     EXPECT_NO_THROW(parseCarFile(good, "mycar.toml"));
     expectCarError(replaceOnce(good, "gib_rate = ", "gib_rat = "), "'parameters.gib_rate'");
     expectCarError(replaceOnce(good, "\"20840 lb/in\"", "\"20840 lb\""), "'parameters.spring_vertical_rate.value'");
@@ -80,11 +78,11 @@ TEST(CarFiles, BadCarFilesAreRefusedNamingTheKey) {
 TEST(CarFiles, AScenarioTakesACarFileRelativeToItself) {
     const fs::path dir = fs::path(ROCKROLL_TEST_TMP) / "car_files";
     fs::create_directories(dir / "cars");
-    std::string car = readText(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/cars/70ton-loaded.toml");
+    std::string car = readTextFile(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/cars/70ton-loaded.toml");
     car = replaceOnce(car, "name = \"70ton-loaded\"", "name = \"my-hopper\"");
     car = replaceOnce(car, "side_bearing_clearance = { value = \"0.25 in\"", "side_bearing_clearance = { value = \"0.125 in\"");
     std::ofstream(dir / "cars" / "my-hopper.toml") << car;
-    std::string scenario = readText(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/70ton-loaded.toml");
+    std::string scenario = readTextFile(fs::path(ROCKROLL_SOURCE_DIR) / "scenarios/70ton-loaded.toml");
     scenario = replaceOnce(scenario, "base = \"70ton-loaded\"", "file = \"cars/my-hopper.toml\"");
     std::ofstream(dir / "mine.toml") << scenario;
     const Scenario sc = loadScenarioFile((dir / "mine.toml").string());

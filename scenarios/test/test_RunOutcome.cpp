@@ -1,5 +1,6 @@
 // What `rockroll run` does with a run that overturns, one that cannot finish,
 // and a rerun from its own summary — through the real command line.
+#include "tests/CliRunner.h"
 #include "tests/TestTmp.h"
 
 #include <filesystem>
@@ -17,16 +18,10 @@ fs::path makeTempDir() { return rockroll::test::makeTestTempDir(); }
 
 int runCli(const std::string& args, const fs::path& errFile) {
     const std::string cmd = std::string(ROCKROLL_BIN) + " " + args + " > /dev/null 2> '" + errFile.string() + "'";
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return rockroll::test::getExitCode(std::system(cmd.c_str()));
 }
 
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rockroll::test::readTextFile;
 
 const std::string kScenarios = ROCKROLL_SCENARIO_DIR;
 
@@ -36,8 +31,8 @@ TEST(RunOutcome, APassedRolloverLimitStopsTheRunWithExitFiveAndKeepsTheHistory) 
     const int code = runCli("run " + kScenarios + "/70ton-loaded-rollover-limit.toml --out '" +
                                 (dir / "out").string() + "'",
                             dir / "err.txt");
-    EXPECT_EQ(code, 5) << readFile(dir / "err.txt");
-    const auto j = nlohmann::json::parse(readFile(dir / "out" / "summary.json"));
+    EXPECT_EQ(code, 5) << readTextFile(dir / "err.txt");
+    const auto j = nlohmann::json::parse(readTextFile(dir / "out" / "summary.json"));
     const std::string regime = j["regime"];
     EXPECT_EQ(regime, "overturned");
     EXPECT_NE(j["stop_reason"].get<std::string>().find("rollover angle limit 2.00 deg"), std::string::npos);
@@ -46,7 +41,7 @@ TEST(RunOutcome, APassedRolloverLimitStopsTheRunWithExitFiveAndKeepsTheHistory) 
     EXPECT_LT(stopped, 20);
     EXPECT_FALSE(j["stop_reason"].get<std::string>().empty());
     // History kept up to the stop: its last time is the stop time.
-    std::istringstream csv(readFile(dir / "out" / "history.csv"));
+    std::istringstream csv(readTextFile(dir / "out" / "history.csv"));
     std::string line, last;
     while (std::getline(csv, line))
         if (!line.empty()) last = line;
@@ -59,7 +54,7 @@ TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
                             "--out '" + (dir / "out").string() + "'",
                             dir / "err.txt");
     EXPECT_EQ(code, 3);
-    EXPECT_NE(readFile(dir / "err.txt").find("wall-time limit"), std::string::npos) << readFile(dir / "err.txt");
+    EXPECT_NE(readTextFile(dir / "err.txt").find("wall-time limit"), std::string::npos) << readTextFile(dir / "err.txt");
 }
 
 // SIGINT and SIGTERM end a run with exit 130 (README, exit codes). The full car's 20 s
@@ -71,15 +66,15 @@ TEST(RunOutcome, SigtermAndSigintExitWith130) {
                                    (dir / signal).string() + "' > /dev/null 2> '" + (dir / "err.txt").string() +
                                    "' & p=$!; sleep 1; kill -" + signal + " $p; wait $p";
         const int status = std::system(script.c_str());
-        EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 130) << signal << ": " << readFile(dir / "err.txt");
-        EXPECT_NE(readFile(dir / "err.txt").find("interrupted"), std::string::npos) << signal;
+        EXPECT_EQ(rockroll::test::getExitCode(status), 130) << signal << ": " << readTextFile(dir / "err.txt");
+        EXPECT_NE(readTextFile(dir / "err.txt").find("interrupted"), std::string::npos) << signal;
     }
 }
 
 TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
     const fs::path dir = makeTempDir();
     // A scenario with a car override and a limit, and command-line overrides on top.
-    std::string toml = readFile(kScenarios + "/70ton-loaded.toml");
+    std::string toml = readTextFile(kScenarios + "/70ton-loaded.toml");
     toml.replace(toml.find("[track]"), 7, "side_bearing_clearance = \"0.1875 in\"\nspring_vertical_rate = \"28 kN/mm\"\n\n[track]");
     toml += "\n[limits]\nflange_clearance = \"0.4 in\"\n";
     std::ofstream(dir / "case.toml") << toml;
@@ -87,16 +82,16 @@ TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
                      "--duration-s 3 --out '" + (dir / "a").string() + "'",
                      dir / "err_a.txt"),
               0)
-        << readFile(dir / "err_a.txt");
+        << readTextFile(dir / "err_a.txt");
     fs::remove(dir / "case.toml");  // the rerun must not need the original file
     ASSERT_EQ(runCli("run --from-summary '" + (dir / "a" / "summary.json").string() + "' --out '" +
                          (dir / "b").string() + "'",
                      dir / "err_b.txt"),
               0)
-        << readFile(dir / "err_b.txt");
-    EXPECT_EQ(readFile(dir / "a" / "history.csv"), readFile(dir / "b" / "history.csv"));
-    auto a = nlohmann::ordered_json::parse(readFile(dir / "a" / "summary.json"));
-    auto b = nlohmann::ordered_json::parse(readFile(dir / "b" / "summary.json"));
+        << readTextFile(dir / "err_b.txt");
+    EXPECT_EQ(readTextFile(dir / "a" / "history.csv"), readTextFile(dir / "b" / "history.csv"));
+    auto a = nlohmann::ordered_json::parse(readTextFile(dir / "a" / "summary.json"));
+    auto b = nlohmann::ordered_json::parse(readTextFile(dir / "b" / "summary.json"));
     EXPECT_NE(a["provenance"]["command"], b["provenance"]["command"]);
     for (auto* j : {&a, &b}) {
         j->erase("wall_time_s");
@@ -113,7 +108,7 @@ TEST(RunOutcome, FromSummaryWithoutProvenanceIsABadInput) {
     const fs::path dir = makeTempDir();
     std::ofstream(dir / "summary.json") << R"({"model": "halfcar"})";
     EXPECT_EQ(runCli("run --from-summary '" + (dir / "summary.json").string() + "'", dir / "err.txt"), 2);
-    EXPECT_NE(readFile(dir / "err.txt").find("provenance.scenario_toml"), std::string::npos);
+    EXPECT_NE(readTextFile(dir / "err.txt").find("provenance.scenario_toml"), std::string::npos);
 }
 
 }  // namespace
