@@ -4,7 +4,9 @@
 
 namespace rockroll {
 
-TruckStatics::TruckStatics(const CarParameters& car, const TruckStaticLoad& load) : car_(car) {
+TruckStatics::TruckStatics(const CarParameters& car, const TruckStaticLoad& load)
+    : wheelRailStiffness_(car.contactStiffnessScale * car.wheelRailStiffness),
+      centerPlateStiffness_(car.contactStiffnessScale * car.centerPlateStiffness) {
     const bool carried = load.weight == TruckWeight::Carried;
     centerPlate_ = load.carBody;
     spring_ = (load.carBody + (carried ? car.bolsterWeight : 0.0)) / 2;
@@ -20,11 +22,11 @@ double TruckStatics::calcWheelLoad(int lumped, int bodies) const {
 }
 
 double TruckStatics::calcWheelDeflection(int lumped, int bodies) const {
-    return calcWheelLoad(lumped, bodies) / (lumped * car_.contactStiffnessScale * car_.wheelRailStiffness);
+    return calcWheelLoad(lumped, bodies) / (lumped * wheelRailStiffness_);
 }
 
 double TruckStatics::getCenterPlateDeflection() const {
-    return centerPlate_ / (car_.contactStiffnessScale * car_.centerPlateStiffness);
+    return centerPlate_ / centerPlateStiffness_;
 }
 
 }  // namespace rockroll

@@ -52,8 +52,9 @@ public:
     double getCenterPlateDeflection() const;
 
 private:
-    const CarParameters car_;
     double centerPlate_ = 0, spring_ = 0, compression_ = 0, unsprungPerWheelset_ = 0;
+    // Contact stiffnesses with the car's contact stiffness scale applied [N/m].
+    double wheelRailStiffness_ = 0, centerPlateStiffness_ = 0;
 };
 
 }  // namespace rockroll
