@@ -378,16 +378,19 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
     const EomHalfCarModel twin = makeTwin(speedMph);
     const double period = 2 * std::numbers::pi / calcOmega(speedMph);
     const double accuracy = 1e-7;
-    StiffIntegrator integ(
-        M::kNumStates,
-        [&twin](double t, const double* y, double* yDot) {
-            M::State s = Eigen::Map<const M::State>(y), d;
-            twin.calcStateDerivative(t, s, d);
-            Eigen::Map<M::State> out(yDot);
-            out = d;
-        },
-        accuracy, getEomAbsoluteTolerances(accuracy));
+    // One period of the twin from y0. Each call has an integrator of its own, started
+    // afresh (CVodeReInit would reset one as well), so a flow depends on y0 alone and the
+    // monodromy's columns can run in parallel with the same bits as one after another.
     auto flow = [&](const M::State& y0) {
+        StiffIntegrator integ(
+            M::kNumStates,
+            [&twin](double t, const double* y, double* yDot) {
+                M::State s = Eigen::Map<const M::State>(y), d;
+                twin.calcStateDerivative(t, s, d);
+                Eigen::Map<M::State> out(yDot);
+                out = d;
+            },
+            accuracy, getEomAbsoluteTolerances(accuracy));
         integ.initialize(0, y0.data());
         integ.advanceTo(period);
         return M::State(Eigen::Map<const M::State>(integ.getState().data()));
@@ -396,13 +399,16 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
     // and well below the motion: positions 10 µm, rates 0.1 mm/s, bristles 0.1 µm.
     M::State step;
     for (int i = 0; i < M::kNumStates; ++i) step[i] = i < M::kNumDofs ? 1e-5 : (i < 2 * M::kNumDofs ? 1e-4 : 1e-7);
+    // The columns are independent one-period flows: nested in a parallel job (validate's
+    // amplitudes, the fold rule's stretches) they share the enclosing pool's threads.
+    // A column that fails throws out of parallelFor as one after another would.
     auto monodromyAt = [&](const M::State& y0, const M::State& base) {
         Eigen::MatrixXd Phi(M::kNumStates, M::kNumStates);
-        for (int i = 0; i < M::kNumStates; ++i) {
+        parallelFor(M::kNumStates, 0, [&](size_t i) {
             M::State yp = y0;
             yp[i] += step[i];
             Phi.col(i) = (flow(yp) - base) / step[i];
-        }
+        });
         return Phi;
     };
     // Shooting: Newton on φ_T(y) = y from the harmonic solution's state, so the

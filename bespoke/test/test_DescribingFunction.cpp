@@ -3,6 +3,7 @@
 #include "bespoke/DescribingFunction.h"
 #include "scenarios/ScenarioLoader.h"
 #include "bespoke/EomSimulation.h"
+#include "mbmodel/Parallel.h"
 #include "mbmodel/Units.h"
 
 #include <gtest/gtest.h>
@@ -101,4 +102,21 @@ TEST(DescribingFunction, ContinuationTracesTheFoldsOfTheJumpResonance) {
     EXPECT_NEAR(df.calcTwinPersistence(low.harmonics, low.speedMph, 10), 1.0, 0.15);
     EXPECT_GT(std::abs(df.calcTwinPersistence(mid.harmonics, mid.speedMph, 10) - 1.0), 0.15)
         << "middle branch at " << mid.speedMph << " mph, " << mid.rollAmplitudeDeg << " deg";
+}
+
+// The twin's monodromy columns run in parallel (nested in the enclosing pool); each is
+// a one-period flow of its own, so the Floquet result is the same bits on one thread
+// as on two (the program's rule: results do not depend on --jobs).
+TEST(DescribingFunction, TwinFloquetIsTheSameOnOneThreadAsOnTwo) {
+    const DescribingFunctionModel df = makeModel(0.75);
+    const auto x = df.solveFromRest(12.0);
+    ASSERT_TRUE(x);
+    TwinFloquet f[2];
+    for (int threads : {1, 2})
+        parallelFor(1, threads, [&](size_t) { f[threads - 1] = df.calcTwinFloquet(*x, 12.0); });
+    EXPECT_TRUE(f[0].converged);
+    EXPECT_EQ(f[0].converged, f[1].converged);
+    EXPECT_EQ(f[0].mismatch, f[1].mismatch);
+    EXPECT_EQ(f[0].maxMultiplier, f[1].maxMultiplier);
+    EXPECT_EQ(f[0].rollAmplitudeDeg, f[1].rollAmplitudeDeg);
 }
