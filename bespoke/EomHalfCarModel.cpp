@@ -262,7 +262,12 @@ void EomHalfCarModel::declareChannels() {
     c.add("bolster_lateral_F", "in", [=](const Sample& s) { return s.y[3 * Bolster + 1] / in; });
     declareEquivalentWheelsetChannels(c, true);
     declareEnergyChannels(c);
-    declareHalfCarFreightChannels(c, calcStaticWheelLoad(), true);
+    // With equal lateral shares a lifted wheel still carries half the lateral restraint,
+    // so its L/V would be ±infinity: a value of the simplification, not of the wheel. Such
+    // a model records no L/V (not evaluated, as the reduced model). Before this, the
+    // runaway check stopped every run that lifted a wheel, among them the describing
+    // function's twin orbits (its stability evidence on the wheel-lift stretches).
+    declareHalfCarFreightChannels(c, calcStaticWheelLoad(), !simp_.equalLateralShares);
 }
 
 EomHalfCarModel::Sample EomHalfCarModel::calcSample(double t, const State& y, const double* energyIntegrals) const {

@@ -146,7 +146,8 @@ inline double calcWheelUnloading(double load, double staticLoad) { return (stati
 /// L/V of one wheel: the lateral contact force on the wheel over its vertical
 /// load, signed (+ toward +y, the left rail). 0 while the wheel carries neither
 /// (a lifted wheel, with the lateral restraint split by load share); ±infinity for
-/// a lateral force on an unloaded wheel (the eom model's equal_lateral_shares).
+/// a lateral force on an unloaded wheel (no model records that: the eom model with
+/// equal_lateral_shares, the one that would, records no L/V).
 inline double calcLOverV(double lateral, double vertical) {
     if (vertical > 0) return lateral / vertical;
     return lateral == 0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), lateral);

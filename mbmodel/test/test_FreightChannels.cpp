@@ -282,6 +282,23 @@ TEST(FreightChannels, ReducedModelReportsNoLOverVInsteadOfAFakeOne) {
     for (const auto& n : run.result.history.names) EXPECT_EQ(n.find("l_over_v"), std::string::npos) << n;
 }
 
+// With equal lateral shares a lifted wheel would carry lateral force (L/V ±infinity):
+// that eom model records no L/V, and a run that lifts a wheel finishes. Before, the
+// runaway check ("channel l_over_v_F1_R_ratio is -inf") stopped it, and with it every
+// describing-function twin orbit on a wheel-lift stretch (validate section 5's stability).
+TEST(FreightChannels, EomWithEqualLateralSharesReportsNoLOverVAndRunsThroughWheelLift) {
+    Scenario sc = makeCase("eom", 0.75, 16.5, 20.0);  // the default case: severe, a wheel lifts
+    sc.eom.equalLateralShares = true;
+    const ScenarioRun run = runScenario(sc);  // a NumericalFailure fails the test
+    EXPECT_GT(run.summary.maxWheelLiftIn, 0.05) << "the case must lift a wheel";
+    EXPECT_TRUE(std::isnan(run.summary.maxLOverV));
+    for (const auto& n : run.result.history.names) EXPECT_EQ(n.find("l_over_v"), std::string::npos) << n;
+    // The describing function's twin is such a model.
+    const EomHalfCarModel twin(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), makeTrackMotion(sc), sc.car.wheelbase),
+                               EomSimplifications::describingFunctionTwin());
+    EXPECT_TRUE(twin.getChannels().lOverV.empty());
+}
+
 // ---- criteria -------------------------------------------------------------------------
 
 TEST(FreightCriteria, ValueAtOrBelowTheLimitPassesAboveFailsUnevaluatedIsIgnored) {
