@@ -4,8 +4,6 @@
 // and validate's two limit options in place of theirs.
 #include "app/ValidateSections.h"
 
-#include "scenarios/ScenarioLoader.h"
-
 #include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>

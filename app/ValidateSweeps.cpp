@@ -59,11 +59,12 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
         SweepResult r;
         r.c = c;
         r.model = m;
-        r.criteria = loadCar(c.car).criteria;
+        const Scenario car = loadCar(c.car);
+        r.criteria = car.criteria;
         results.push_back(r);
         for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
             SweepSpec spec;
-            spec.scenario = loadCar(c.car);
+            spec.scenario = car;
             spec.scenario.model = m;
             spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
             spec.scenario.run.duration = s.sweepDuration;
