@@ -21,7 +21,11 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["steady_roll_amplitude_deg"] = s.steadyRollAmplitudeDeg;
     j["peak_to_peak_roll_deg"] = s.peakToPeakRollDeg;
     j["max_wheel_lift_in"] = s.maxWheelLiftIn;
-    j["max_wheel_load_lb"] = s.maxWheelLoadLb;
+    auto valueOrNull = [](double x) { return std::isnan(x) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(x); };
+    j["max_wheel_load_lb"] = s.maxWheelLoadLb;  // the truck side's two wheels; kept beside its new name for one release
+    j["max_truck_side_wheel_load_lb"] = s.maxWheelLoadLb;
+    j["max_single_wheel_load_lb"] = valueOrNull(s.maxSingleWheelLoadLb);
+    j["wheel_load_basis"] = s.wheelLoadBasis;
     j["min_wheel_load_ratio"] = s.minWheelLoadRatio;
     j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
     j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
@@ -39,8 +43,17 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["wheel_lift_longest_s"] = s.wheelLiftLongestS;
     j["energy_balance_error"] = std::isfinite(s.energyBalanceError) ? nlohmann::ordered_json(s.energyBalanceError)
                                                                     : nlohmann::ordered_json(nullptr);
+    j["worst_energy_balance_error"] = std::isfinite(s.worstEnergyBalanceError)
+                                          ? nlohmann::ordered_json(s.worstEnergyBalanceError)
+                                          : nlohmann::ordered_json(nullptr);
+    j["steady"] = {{"window_s", s.steady.windowS},
+                   {"cycles", s.steady.cycles},
+                   {"max_roll_deg", s.steady.rollDeg},
+                   {"max_wheel_lift_in", s.steady.wheelLiftIn},
+                   {"max_truck_side_wheel_load_lb", s.steady.truckSideWheelLoadLb},
+                   {"max_side_bearing_load_lb", s.steady.sideBearingLoadLb},
+                   {"max_center_plate_load_lb", s.steady.centerPlateLoadLb}};
     // Freight channels and criteria (null: the model has no such channel).
-    auto valueOrNull = [](double x) { return std::isnan(x) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(x); };
     j["max_wheel_unloading"] = valueOrNull(s.maxWheelUnloading);
     j["raw_max_wheel_unloading"] = valueOrNull(s.rawMaxWheelUnloading);
     j["max_l_over_v"] = valueOrNull(s.maxLOverV);
@@ -64,6 +77,7 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
                                  {"unit", c.unit},
                                  {"pass", c.evaluated() ? nlohmann::ordered_json(c.passes()) : nlohmann::ordered_json(nullptr)}});
     j["criteria_pass"] = s.passesCriteria();
+    j["criteria_from_s"] = s.criteriaFromS;
     j["filter"] = s.filter;
     j["sim_time_s"] = s.simTimeS;
     j["wall_time_s"] = s.wallTimeS;

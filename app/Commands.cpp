@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <thread>
 #include <filesystem>
+#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <fstream>
@@ -106,13 +107,24 @@ void printSummary(const RunSummary& s, const Scenario& sc) {
     fmt::print("  max wheel lift                   {:9.2f} in\n", s.maxWheelLiftIn);
     fmt::print("  max wheel load (2 wheels, 1 side){:9.0f} lb    (raw {:.0f}, static {:.0f})\n", s.maxWheelLoadLb,
                s.rawMaxWheelLoadLb, s.staticWheelLoadLb);
-    fmt::print("  min single-wheel load ratio      {:9.3f}       (raw {:.3f})\n", s.minWheelLoadRatio,
-               s.rawMinWheelLoadRatio);
+    if (std::isfinite(s.maxSingleWheelLoadLb))
+        fmt::print("  max single-wheel load            {:9.0f} lb\n", s.maxSingleWheelLoadLb);
+    fmt::print("  min {:<29}{:9.3f}       (raw {:.3f})\n",
+               s.wheelLoadBasis == "truck side" ? "truck-side (2-wheel) load ratio" : "single-wheel load ratio",
+               s.minWheelLoadRatio, s.rawMinWheelLoadRatio);
     fmt::print("  max side-bearing load            {:9.0f} lb    (raw {:.0f})\n", s.maxSideBearingLoadLb,
                s.rawMaxSideBearingLoadLb);
     fmt::print("  max center-plate load            {:9.0f} lb    (raw {:.0f}, static {:.0f})\n",
                s.maxCenterPlateLoadLb, s.rawMaxCenterPlateLoadLb, s.staticCenterPlateLoadLb);
+    fmt::print("  steady part (last {:.2f} s, {} forcing periods): max roll {:.2f} deg, wheel lift {:.2f} in, wheel load "
+               "(2 wheels, 1 side) {:.0f} lb, side bearing {:.0f} lb, center plate {:.0f} lb\n",
+               s.steady.windowS, s.steady.cycles, s.steady.rollDeg, s.steady.wheelLiftIn, s.steady.truckSideWheelLoadLb,
+               s.steady.sideBearingLoadLb, s.steady.centerPlateLoadLb);
+    if (std::isfinite(s.energyBalanceError))
+        fmt::print("  energy balance error {:.2f} % at the end, {:.2f} % worst over the run\n", 100 * s.energyBalanceError,
+                   100 * s.worstEnergyBalanceError);
     fmt::print("{}", formatCriteriaTable(s));
+    if (s.criteriaFromS > 0) fmt::print("  criteria judged from t = {:.2f} s (after the speed ramp or level lead-in)\n", s.criteriaFromS);
     fmt::print("  force maxima filtered: {}\n", s.filter);
     fmt::print("  {} integrator steps, {:.1f} s simulated in {:.2f} s wall ({:.1f}x real time)\n", s.steps,
                s.simTimeS, s.wallTimeS, s.simTimeS / s.wallTimeS);

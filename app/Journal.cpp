@@ -100,6 +100,21 @@ RunSummary summaryFromJson(const Json& j) {
     s.maxWheelLiftIn = j.at("max_wheel_lift_in").get<double>();
     s.maxWheelLoadLb = j.at("max_wheel_load_lb").get<double>();
     s.minWheelLoadRatio = j.at("min_wheel_load_ratio").get<double>();
+    // Added fields: a journal written by an earlier release lacks them.
+    if (j.contains("max_single_wheel_load_lb")) s.maxSingleWheelLoadLb = numberOrNaN(j, "max_single_wheel_load_lb");
+    if (j.contains("wheel_load_basis")) s.wheelLoadBasis = j.at("wheel_load_basis").get<std::string>();
+    if (j.contains("worst_energy_balance_error")) s.worstEnergyBalanceError = numberOrNaN(j, "worst_energy_balance_error");
+    if (j.contains("criteria_from_s")) s.criteriaFromS = j.at("criteria_from_s").get<double>();
+    if (j.contains("steady")) {
+        const Json& st = j.at("steady");
+        s.steady.windowS = st.at("window_s").get<double>();
+        s.steady.cycles = getJsonInteger<int>(st, "cycles");
+        s.steady.rollDeg = st.at("max_roll_deg").get<double>();
+        s.steady.wheelLiftIn = st.at("max_wheel_lift_in").get<double>();
+        s.steady.truckSideWheelLoadLb = st.at("max_truck_side_wheel_load_lb").get<double>();
+        s.steady.sideBearingLoadLb = st.at("max_side_bearing_load_lb").get<double>();
+        s.steady.centerPlateLoadLb = st.at("max_center_plate_load_lb").get<double>();
+    }
     s.maxSideBearingLoadLb = j.at("max_side_bearing_load_lb").get<double>();
     s.maxCenterPlateLoadLb = j.at("max_center_plate_load_lb").get<double>();
     s.rawMaxWheelLoadLb = j.at("raw_max_wheel_load_lb").get<double>();

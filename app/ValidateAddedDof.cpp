@@ -38,12 +38,18 @@ std::string makeAddedDofSection(const Settings& s) {
                      "fullcar|halfcar --speed-mph V`. The 100-ton car's truck spacing (39.5 ft) differs from the rail "
                      "length (39 ft), so its two trucks see slightly different phases and the body pitches and yaws; "
                      "the full car also gives single-wheel loads, where the half car's equivalent wheelset lumps two "
-                     "wheels.\n\n| case | model | max roll, deg | max pitch, deg | max yaw, deg | min single-wheel load / static | max wheel load, lb |\n|---|---|---|---|---|---|---|\n";
+                     "wheels. The lowest wheel load over its static value is one real wheel's in the full car and one truck "
+                     "side's (two wheels) in the half car; the largest single-wheel load exists only in the full car."
+                     "\n\n| case | model | max roll, deg | max pitch, deg | max yaw, deg | min wheel load / static | taken over | "
+                     "max single-wheel load, lb | max truck-side wheel load (2 wheels), lb |\n|---|---|---|---|---|---|---|---|---|\n";
     for (size_t i = 0; i < cases.size(); ++i)
         for (int m = 0; m < 2; ++m)
-            md += fmt::format("| {} {:.2f} in {:g} mph | {} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} |\n", cases[i].car,
-                              cases[i].amp, cases[i].mph, m == 0 ? model_names::kFullCar : model_names::kHalfCar, res[i][m].maxRollDeg,
-                              angles[i][m][0], angles[i][m][1], res[i][m].minWheelLoadRatio, res[i][m].maxWheelLoadLb);
+            md += fmt::format("| {} {:.2f} in {:g} mph | {} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {} | {} | {:.0f} |\n",
+                              cases[i].car, cases[i].amp, cases[i].mph, m == 0 ? model_names::kFullCar : model_names::kHalfCar,
+                              res[i][m].maxRollDeg, angles[i][m][0], angles[i][m][1], res[i][m].minWheelLoadRatio,
+                              res[i][m].wheelLoadBasis,
+                              std::isfinite(res[i][m].maxSingleWheelLoadLb) ? fmt::format("{:.0f}", res[i][m].maxSingleWheelLoadLb) : "—",
+                              res[i][m].maxWheelLoadLb);
     return md + "\nThe half car is planar, so its pitch and yaw are zero by construction.\n\n";
 }
 

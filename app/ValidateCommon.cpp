@@ -47,24 +47,112 @@ std::array<double, 5> getTableValues(const RunSummary& x) {
     return {x.maxRollDeg, x.maxWheelLiftIn, x.maxWheelLoadLb, x.maxSideBearingLoadLb, x.maxCenterPlateLoadLb};
 }
 
-std::optional<std::array<double, 5>> findSweepValues(const std::vector<SweepResult>& sweeps, const std::string& car,
-                                                     double amp, const std::string& model, double mph) {
-    for (const auto& r : sweeps) {
-        if (r.c.car != car || std::abs(r.c.amplitudeIn - amp) > 1e-9 || r.model != model) continue;
-        std::array<double, 5> best{};
-        bool any = false;
-        for (const auto* l : {&r.up, &r.down}) {
+std::array<double, 5> getSteadyTableValues(const RunSummary& x) {
+    return {x.steady.rollDeg, x.steady.wheelLiftIn, x.steady.truckSideWheelLoadLb, x.steady.sideBearingLoadLb,
+            x.steady.centerPlateLoadLb};
+}
+
+const std::vector<std::string>& getComparedModels() {
+    static const std::vector<std::string> models{model_names::kFullCar, model_names::kHalfCar, model_names::kEom,
+                                                 model_names::kReduced};
+    return models;
+}
+
+std::string describeStatistics(const Settings& s) {
+    return fmt::format(
+        "Each row is one run of one model on one branch: **from rest** (`rockroll run scenarios/<car>.toml --model M "
+        "--amplitude-in A --speed-mph V --duration-s {}`), or the point of section 2's **up sweep** or **down sweep** "
+        "nearest the report's speed (its speed is given); every cell of a row comes from that run. Two statistics, the "
+        "same for every model, each in its own table: the **steady part**, the maxima over the last {} forcing periods "
+        "of the run (at most its second half), and the **whole run**, the maxima from t = 0 (a sweep point's include "
+        "its 1 s speed ramp and any jump transient). Roll is the largest |roll|, wheel lift the largest lift of any "
+        "wheel, and every load is the 20 Hz filtered maximum; the wheel load is one truck side's two wheels in every "
+        "model (the half-car models' equivalent wheel; the full car's single-wheel values are in section 8). A model "
+        "not swept on a case says so instead of borrowing another run. Each cell: value (difference from the "
+        "report).",
+        s.runDuration, SummaryOptions{}.steadyCycles);
+}
+
+std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs) {
+    std::vector<RunSummary> out(runs.size());
+    std::map<std::string, Scenario> cars;  // each car's file read once, before the threads start
+    for (const auto& r : runs)
+        if (!cars.count(r.car)) cars.emplace(r.car, loadCar(r.car));
+    std::vector<std::function<void()>> jobs;
+    for (size_t i = 0; i < runs.size(); ++i)
+        jobs.push_back([&, i] {
+            Scenario sc = cars.at(runs[i].car);
+            sc.model = runs[i].model;
+            sc.track.amplitude = runs[i].amplitudeIn * units::inch;
+            sc.speed = runs[i].speedMph * units::mph;
+            sc.run.duration = s.runDuration;
+            sc.run.outputRate = 100;
+            out[i] = runScenario(sc).summary;
+        });
+    runJobs(jobs, s.jobs);
+    return out;
+}
+
+std::vector<BranchRow> collectBranchRows(const std::vector<SweepResult>& sweeps, const std::string& car, double amp,
+                                         double mph, const std::vector<std::string>& models,
+                                         const std::vector<RunSummary>& fromRest) {
+    std::vector<BranchRow> rows;
+    for (const auto& m : models) {
+        BranchRow rest{m, "from rest", mph, std::nullopt, "not run"};
+        for (const auto& x : fromRest)
+            if (x.model == m && x.car == car && std::abs(x.amplitudeIn - amp) < 1e-9 && std::abs(x.speedMph - mph) < 1e-9) {
+                rest.summary = x;
+                rest.missing.clear();
+            }
+        rows.push_back(rest);
+        const SweepResult* swept = nullptr;
+        for (const auto& r : sweeps)
+            if (r.c.car == car && std::abs(r.c.amplitudeIn - amp) < 1e-9 && r.model == m) swept = &r;
+        for (const auto& [label, list] : {std::pair{"up sweep", swept ? &swept->up : nullptr},
+                                          std::pair{"down sweep", swept ? &swept->down : nullptr}}) {
+            BranchRow row{m, label, NAN, std::nullopt, "not swept on this case"};
             const SweepPoint* nearest = nullptr;
-            for (const auto& p : *l)
-                if (!p.failed && (!nearest || std::abs(p.speedMph - mph) < std::abs(nearest->speedMph - mph))) nearest = &p;
-            if (!nearest) continue;
-            const auto v = getTableValues(nearest->summary);
-            for (int k = 0; k < 5; ++k) best[k] = std::max(best[k], v[k]);
-            any = true;
+            if (list)
+                for (const auto& p : *list)
+                    if (!nearest || std::abs(p.speedMph - mph) < std::abs(nearest->speedMph - mph)) nearest = &p;
+            if (nearest) {
+                row.speedMph = nearest->speedMph;
+                if (nearest->failed) row.missing = "failed: " + nearest->error;
+                else row.summary = nearest->summary, row.missing.clear();
+            }
+            rows.push_back(row);
         }
-        if (any) return best;
     }
-    return std::nullopt;
+    return rows;
+}
+
+std::string formatBranchTable(const std::vector<BranchRow>& rows, const std::vector<BranchColumn>& columns,
+                              const std::vector<double>& published, bool steady) {
+    std::string md = "| model | start | speed, mph | regime |";
+    for (const auto& c : columns) md += " " + c.header + " |";
+    md += "\n|---|---|---|---|";
+    for (size_t k = 0; k < columns.size(); ++k) md += "---|";
+    md += "\n| report | | | |";
+    for (double v : published) md += fmt::format(" {:g} |", v);
+    md += "\n";
+    for (const auto& r : rows) {
+        md += fmt::format("| {} | {} | {} |", r.model, r.start,
+                          std::isfinite(r.speedMph) ? fmt::format("{:g}", r.speedMph) : "—");
+        if (!r.summary) {
+            md += fmt::format(" {} |", r.missing);
+            for (size_t k = 0; k < columns.size(); ++k) md += " |";
+            md += "\n";
+            continue;
+        }
+        md += fmt::format(" {} |", r.summary->regime);
+        const auto v = steady ? getSteadyTableValues(*r.summary) : getTableValues(*r.summary);
+        for (size_t k = 0; k < columns.size(); ++k) {
+            const double x = v[columns[k].index] * columns[k].scale;
+            md += fmt::format(" {:.{}f} ({}) |", x, columns[k].decimals, fmtPct(x, published[k]));
+        }
+        md += "\n";
+    }
+    return md;
 }
 
 std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateBranch>& branches, double mph,

@@ -24,7 +24,8 @@ std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult
 
     std::string md = fmt::format(
         "## 9. Freight criteria per sweep\n\nEach point is judged by the criteria every run's summary carries "
-        "(filtered values, `criteria` in summary.json): a value above its limit fails. Limits: each sweep's own "
+        "(filtered values, `criteria` in summary.json, taken over each point's time on the perturbed track after its "
+        "1 s speed ramp: docs/validation.md, \"Statistics\"): a value above its limit fails. Limits: each sweep's own "
         "scenario file's `[criteria]` table (a car marked * differs from the header's), with `rockroll validate --roll-limit-deg {:g} --wheel-load-limit {:g}` "
         "setting the first two. Speeds that fail, per sweep and criterion (from section 2's data); "
         "\"n/e\": the model does not evaluate it.\n\n| car | A, in | model | direction |",
@@ -50,7 +51,7 @@ std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult
             std::vector<bool> evaluated(names.size(), false);
             for (const auto& p : *l) {
                 if (p.failed) continue;
-                const std::vector<Criterion> c = evaluateCriteria(p.summary, limits);
+                const std::vector<Criterion> c = rejudgeCriteria(p.summary.criteria, limits);
                 for (size_t i = 0; i < c.size(); ++i) {
                     if (!c[i].evaluated()) continue;
                     evaluated[i] = true;

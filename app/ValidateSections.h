@@ -52,6 +52,18 @@ struct SweepResult {
     CriteriaLimits criteria;  ///< the [criteria] of the scenario the sweep ran (section 9 judges by them)
 };
 
+/// What section 7 (convergence) measures of the defaults every other section runs with: per quantity (max
+/// roll, wheel load, side bearing, center plate; whole-run maxima from rest), the
+/// largest relative change over its cases from the default contact stiffness to the
+/// stiffest run and from the default accuracy to the tightest. Run before the
+/// comparison tables, which print it beside their values.
+struct ResidualUncertainty {
+    std::array<double, 4> stiffness{NAN, NAN, NAN, NAN}, accuracy{NAN, NAN, NAN, NAN};
+    std::string stiffnessStep, accuracyStep;  ///< "×1 → ×8", "1e-4 → 1e-6"
+    int cases = 0;
+    /// One sentence for a comparison table; empty when section 7 did not run.
+    std::string describe() const;
+};
 /// Describing-function solutions per amplitude (70-ton loaded), sections 3 and 5.
 using SteadyByAmplitude = std::map<double, std::vector<SteadyStateBranch>>;
 
@@ -72,7 +84,7 @@ struct PhaseTime {
 std::string makeHeader(const Settings& s, const std::string& commit, double minutes,
                        const std::vector<std::pair<std::string, PhaseTime>>& phases);
 /// 1. Time histories of the default case (ValidateTimeHistories.cpp).
-std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& meta);
+std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& meta, const ResidualUncertainty& u);
 /// What moved since the previous report (ValidateChanges.cpp).
 PreviousReport readPreviousReport(const std::filesystem::path& out);
 std::string makeChangesSection(const PreviousReport& previous, const nlohmann::ordered_json& meta);
@@ -81,16 +93,16 @@ std::vector<SweepResult> runAllSweeps(const Settings& s);
 std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta);
 /// 3. Table 3 (ValidateTable3.cpp).
 std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
-                              nlohmann::ordered_json& meta);
+                              const ResidualUncertainty& u, nlohmann::ordered_json& meta);
 /// 4. Table 4 (ValidateTable4.cpp).
-std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps);
+std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps, const ResidualUncertainty& u);
 /// 5. Describing function (ValidateDescribingFunction.cpp); traceSteady also feeds section 3.
 SteadyByAmplitude traceSteady(const Settings& s);
 std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmplitude& steady, nlohmann::ordered_json& meta);
 /// 6. Modes against Table 1 (ValidateModes.cpp).
 std::string makeModesSection();
 /// 7. Convergence in contact stiffness and integrator accuracy (ValidateConvergence.cpp).
-std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta);
+std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta, ResidualUncertainty& uncertainty);
 /// 8. The added degrees of freedom (ValidateAddedDof.cpp).
 std::string makeAddedDofSection(const Settings& s);
 /// 9. The freight criteria per sweep (ValidateCriteria.cpp).
@@ -121,15 +133,59 @@ std::string fmtPct(double ours, double report);
 /// "sweep_<car>_<A>in" key part: "70ton-loaded_0.75in".
 std::string caseKey(const SweepCase& c);
 
+/// The time-domain models every comparison table holds: fullcar, halfcar, eom, reduced.
+const std::vector<std::string>& getComparedModels();
+
+/// What a branch table's rows are and which statistics it shows (sections 3 and 4).
+std::string describeStatistics(const Settings& s);
+
 /// "reduced, halfcar (every case) and fullcar (70ton-loaded)".
 std::string describeSweptModels(const Settings& s);
 
-/// Max roll, wheel lift, wheel load, side bearing, center plate (Tables 3 and 4).
+/// Max roll, wheel lift, truck-side wheel load, side bearing, center plate (Tables 3 and
+/// 4): the whole-run maxima, or (steady) the maxima over the steady part of the run.
 std::array<double, 5> getTableValues(const RunSummary& x);
+std::array<double, 5> getSteadyTableValues(const RunSummary& x);
 
-/// The larger of the up and down sweep points nearest `mph` (a sweep's maxima at that speed).
-std::optional<std::array<double, 5>> findSweepValues(const std::vector<SweepResult>& sweeps, const std::string& car,
-                                                     double amp, const std::string& model, double mph);
+/// One row of a model-against-report comparison: one model, one start, one speed;
+/// every cell of the row comes from the one run `summary`.
+struct BranchRow {
+    std::string model;
+    std::string start;                  ///< "from rest" | "up sweep" | "down sweep"
+    double speedMph = NAN;              ///< the run's speed (a sweep's point nearest the speed asked for)
+    std::optional<RunSummary> summary;  ///< empty: no such run (`missing` says why)
+    std::string missing;
+};
+
+/// A run from rest at a case of the report's tables.
+struct RestRun {
+    std::string car;
+    double amplitudeIn = 0, speedMph = 0;
+    std::string model;
+};
+/// The runs, from rest for s.runDuration, recorded at 100 Hz, in parallel; results by index.
+std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs);
+
+/// Per model, in order: its run from rest (fromRest, the summary of that model's
+/// RestRun at this case) and section 2's up- and down-sweep points nearest `mph`
+/// (a failed point or a case not swept for the model is a row with `missing` set).
+std::vector<BranchRow> collectBranchRows(const std::vector<SweepResult>& sweeps, const std::string& car, double amp,
+                                         double mph, const std::vector<std::string>& models,
+                                         const std::vector<RunSummary>& fromRest);
+
+/// A column of a branch table: its header, its index into getTableValues and the
+/// factor from the summary's unit to the column's.
+struct BranchColumn {
+    std::string header;
+    int index = 0;
+    double scale = 1;
+    int decimals = 0;
+};
+/// The rows as a Markdown table, each cell "value (difference from `published`)":
+/// the steady-part maxima (steady) or the whole-run maxima; the model, start, speed
+/// and regime lead each row.
+std::string formatBranchTable(const std::vector<BranchRow>& rows, const std::vector<BranchColumn>& columns,
+                              const std::vector<double>& published, bool steady);
 
 /// The largest (stable, when stability was decided) describing-function solution at
 /// `mph`, interpolated along the path: roll amplitude, wheel load, side bearing.

@@ -26,21 +26,26 @@ void writeSweepCsv(const Settings& s, const SweepResult& r) {
     writeAtomically(s.out / fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model), [&](std::ostream& o) {
         CsvWriter csv(o, {"direction", "start", "speed_mph", "failed", "max_roll_deg", "steady_roll_amplitude_deg",
                           "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb", "min_wheel_load_ratio",
-                          "max_side_bearing_load_lb", "max_center_plate_load_lb", "regime"});
+                          "max_side_bearing_load_lb", "max_center_plate_load_lb", "regime", "steady_window_s",
+                          "steady_max_roll_deg", "steady_max_wheel_lift_in", "steady_max_truck_side_wheel_load_lb",
+                          "steady_max_side_bearing_load_lb", "steady_max_center_plate_load_lb"});
         for (const auto* list : {&r.up, &r.down})
             for (const auto& p : *list) {
                 const RunSummary& x = p.summary;
                 if (p.failed) {
                     const CsvCell none = CsvCell::empty();
                     csv.writeRow({p.direction, p.start, p.speedMph, 1, none, none, none, none, none, none, none, none,
-                                  "failed"});
+                                  "failed", none, none, none, none, none, none});
                     continue;
                 }
                 csv.writeRow({p.direction, p.start, p.speedMph, 0, CsvCell::fixed(x.maxRollDeg, 4),
                               CsvCell::fixed(x.steadyRollAmplitudeDeg, 4), CsvCell::fixed(x.peakToPeakRollDeg, 4),
                               CsvCell::fixed(x.maxWheelLiftIn, 4), CsvCell::fixed(x.maxWheelLoadLb, 0),
                               CsvCell::fixed(x.minWheelLoadRatio, 4), CsvCell::fixed(x.maxSideBearingLoadLb, 0),
-                              CsvCell::fixed(x.maxCenterPlateLoadLb, 0), x.regime});
+                              CsvCell::fixed(x.maxCenterPlateLoadLb, 0), x.regime, CsvCell::fixed(x.steady.windowS, 3),
+                              CsvCell::fixed(x.steady.rollDeg, 4), CsvCell::fixed(x.steady.wheelLiftIn, 4),
+                              CsvCell::fixed(x.steady.truckSideWheelLoadLb, 0), CsvCell::fixed(x.steady.sideBearingLoadLb, 0),
+                              CsvCell::fixed(x.steady.centerPlateLoadLb, 0)});
             }
     });
 }
@@ -79,11 +84,12 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
     // parallelFor takes jobs in index order, so the longest go first: otherwise the
     // full car's sweep sets, listed last, finish alone on one thread. Each set's cost
     // is its simulated time over its model's speed (bench/README.md: the full car runs
-    // about 3x slower than the half car, the half car slower than the reduced model).
+    // about 3x slower than the half car, the half car about 2x slower than eom, and eom
+    // slower than the reduced model).
     // The results do not depend on the order (each set is independent; stored by index).
     auto costOf = [](const SweepSpec& sp) {
         const std::string& m = sp.scenario.model;
-        const double speed = m == model_names::kFullCar ? 4 : m == model_names::kHalfCar ? 12 : 100;
+        const double speed = m == model_names::kFullCar ? 4 : m == model_names::kHalfCar ? 12 : m == model_names::kEom ? 24 : 100;
         return double(getSweepSpeeds(sp).size()) * sp.scenario.run.duration / speed;
     };
     std::vector<size_t> order(specs.size());
@@ -112,19 +118,36 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
         "the previous one; the speed ramps over 1 s so the rails never jump. Data `sweep_<car>_<A>in_<model>.csv`, "
         "plots `sweep_<car>_<A>in.png` (roll) and `sweep_loads_<car>_<A>in.png` (wheel lift and loads).\n\n",
         s.sweepStep, s.sweepDuration, describeSweptModels(s));
-    md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | max steady roll, deg |\n"
-          "|---|---|---|---|---|---|---|\n";
+    md += "Steady roll amplitude: half the peak-to-peak roll over each point's last 3 forcing periods. The largest "
+          "amplitude of a sweep is given with its speed; a down sweep that never drops and is largest at its lowest "
+          "speed has no maximum in the range swept: it stays on the upper branch to the lowest speed swept.\n\n";
+    md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | "
+          "largest steady roll, up sweep | largest steady roll, down sweep |\n"
+          "|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : sweeps) {
         writeSweepCsv(s, r);
-        double maxSteady = 0;
-        for (const auto* l : {&r.up, &r.down})
-            for (const auto& p : *l)
-                if (!p.failed) maxSteady = std::max(maxSteady, p.summary.steadyRollAmplitudeDeg);
+        auto largest = [](const std::vector<SweepPoint>& l) {
+            const SweepPoint* best = nullptr;
+            for (const auto& p : l)
+                if (!p.failed && (!best || p.summary.steadyRollAmplitudeDeg > best->summary.steadyRollAmplitudeDeg)) best = &p;
+            return best;
+        };
+        const SweepPoint* up = largest(r.up);
+        const SweepPoint* down = largest(r.down);
+        const std::string upCell = up ? fmt::format("{:.2f}° at {:g} mph", up->summary.steadyRollAmplitudeDeg, up->speedMph) : "—";
+        std::string downCell = "—";
+        if (down) {
+            const bool atLowest = !r.down.empty() && down == &r.down.back();
+            downCell = !std::isfinite(r.jumpDownMph) && atLowest
+                           ? fmt::format("stays on the upper branch to the lowest speed swept ({:.2f}° at {:g} mph)",
+                                         down->summary.steadyRollAmplitudeDeg, down->speedMph)
+                           : fmt::format("{:.2f}° at {:g} mph", down->summary.steadyRollAmplitudeDeg, down->speedMph);
+        }
         const bool band = std::isfinite(r.jumpUpMph) && std::isfinite(r.jumpDownMph) && r.jumpDownMph < r.jumpUpMph;
-        md += fmt::format("| {} | {:.2f} | {} | {} | {} | {} | {:.2f} |\n", r.c.car, r.c.amplitudeIn, r.model,
+        md += fmt::format("| {} | {:.2f} | {} | {} | {} | {} | {} | {} |\n", r.c.car, r.c.amplitudeIn, r.model,
                           std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f}", r.jumpUpMph) : "none",
                           std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f}", r.jumpDownMph) : "none",
-                          band ? fmt::format("{:.1f}–{:.1f}", r.jumpDownMph, r.jumpUpMph) : "—", maxSteady);
+                          band ? fmt::format("{:.1f}–{:.1f}", r.jumpDownMph, r.jumpUpMph) : "—", upCell, downCell);
         meta["sweeps"].push_back({{"car", r.c.car}, {"amplitude_in", r.c.amplitudeIn}, {"model", r.model},
                                   {"file", fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model)},
                                   {"key", caseKey(r.c)}, {"figure", r.c.figure},

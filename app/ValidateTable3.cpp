@@ -1,5 +1,5 @@
 // validate, section 3: the report's Table 3 (maximum response at selected speeds)
-// beside every model and the describing function.
+// beside every time-domain model on every branch, and the describing function.
 #include "app/ValidateSections.h"
 
 #include <fmt/format.h>
@@ -14,6 +14,7 @@ struct Table3Row {
     std::string label, car;
     double amplitudeIn, speedMph;
     std::array<double, 5> report;  // roll deg, lift in, wheel lb, side bearing lb, center plate lb
+    std::string branch;            // which branch the report's number is on, in its own words
 };
 
 std::vector<Table3Row> loadTable3(const Mit1976& ref) {
@@ -22,7 +23,8 @@ std::vector<Table3Row> loadTable3(const Mit1976& ref) {
         const std::string k = fmt::format("table3[{}].", i);
         rows.push_back({ref.text(k + "label"), ref.text(k + "car"), ref(k + "amplitude", "in"), ref(k + "speed", "mph"),
                         {ref(k + "max_roll", "deg"), ref(k + "max_wheel_lift", "in"), ref(k + "max_wheel_load", "lb"),
-                         ref(k + "max_side_bearing_load", "lb"), ref(k + "max_center_plate_load", "lb")}});
+                         ref(k + "max_side_bearing_load", "lb"), ref(k + "max_center_plate_load", "lb")},
+                        ref.has(k + "branch") ? ref.text(k + "branch") : std::string()});
     }
     return rows;
 }
@@ -30,76 +32,63 @@ std::vector<Table3Row> loadTable3(const Mit1976& ref) {
 }  // namespace
 
 std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
-                              nlohmann::ordered_json& meta) {
-    const std::vector<Table3Row> table3 = loadTable3(Mit1976::get());
-    const std::vector<std::string> allModels{model_names::kFullCar, model_names::kHalfCar, model_names::kEom, model_names::kReduced};
-    // Models without sweeps: one run from rest at the report's speed. values[row][model].
-    std::vector<std::vector<std::array<double, 5>>> values(table3.size(), std::vector<std::array<double, 5>>(allModels.size()));
-    std::vector<std::function<void()>> jobs;
-    for (size_t i = 0; i < table3.size(); ++i)
-        for (size_t m = 0; m < allModels.size(); ++m) {
-            if (auto v = findSweepValues(sweeps, table3[i].car, table3[i].amplitudeIn, allModels[m], table3[i].speedMph)) {
-                values[i][m] = *v;
-                continue;
-            }
-            jobs.push_back([&, i, m] {
-                Scenario sc = loadCar(table3[i].car);
-                sc.model = allModels[m];
-                sc.track.amplitude = table3[i].amplitudeIn * units::inch;
-                sc.speed = table3[i].speedMph * units::mph;
-                sc.run.duration = s.runDuration;
-                sc.run.outputRate = 100;
-                values[i][m] = getTableValues(runScenario(sc).summary);
-            });
-        }
-    runJobs(jobs, s.jobs);
+                              const ResidualUncertainty& u, nlohmann::ordered_json& meta) {
+    const Mit1976& ref = Mit1976::get();
+    const std::vector<Table3Row> table3 = loadTable3(ref);
+    const std::vector<std::string>& models = getComparedModels();
+    std::vector<RestRun> restRuns;
+    for (const auto& row : table3)
+        for (const auto& m : models) restRuns.push_back({row.car, row.amplitudeIn, row.speedMph, m});
+    const std::vector<RunSummary> fromRest = runFromRest(s, restRuns);
 
-    static const char* qty[] = {"roll, deg", "wheel lift, in", "wheel load, lb", "side bearing, lb", "center plate, lb"};
+    const std::vector<BranchColumn> columns{{"roll, deg", 0, 1, 2},
+                                            {"wheel lift, in", 1, 1, 2},
+                                            {"wheel load (2 wheels, 1 side), lb", 2, 1, 0},
+                                            {"side bearing, lb", 3, 1, 0},
+                                            {"center plate, lb", 4, 1, 0}};
     std::string md = "## 3. The report's Table 3 (maximum response at selected speeds) beside every model\n\n";
-    md += fmt::format("Swept models ({}) take the larger of the up- and down-sweep maxima at the sweep speed nearest the "
-                      "report's; the others run once from rest at that speed for {} s (`rockroll run scenarios/<car>.toml "
-                      "--model M --amplitude-in A --speed-mph V --duration-s {}`). Each cell: value (difference from the "
-                      "report). Loads are filtered maxima (20 Hz).\n\n",
-                      describeSweptModels(s), s.runDuration, s.runDuration);
-    for (size_t i = 0; i < table3.size(); ++i) {
-        const auto& row = table3[i];
-        std::optional<std::array<double, 3>> df;
+    md += describeStatistics(s) + "\n\n";
+    if (!u.describe().empty()) md += u.describe() + "\n\n";
+    if (ref.has("table3_basis.statistic"))
+        md += fmt::format("What the report's numbers are: {}\n\n", ref.text("table3_basis.statistic"));
+    for (const auto& row : table3) {
+        const std::vector<BranchRow> rows = collectBranchRows(sweeps, row.car, row.amplitudeIn, row.speedMph, models, fromRest);
+        const std::vector<double> published(row.report.begin(), row.report.end());
+        md += fmt::format("**{} at {:g} mph**", row.label, row.speedMph);
+        if (!row.branch.empty()) md += fmt::format(" — the report's number is most likely on {}", row.branch);
+        md += "\n\nSteady part:\n\n" + formatBranchTable(rows, columns, published, true);
+        // The describing function's largest (stable, in the full run) solution at this speed:
+        // its roll amplitude, and its loads from the twin's time history (section 5).
         if (row.car == "70ton-loaded")
             for (const auto& [a, branches] : steady)
-                if (std::abs(a - row.amplitudeIn) < 1e-9) df = findSteadyAt(branches, row.speedMph, !s.quick);
-        md += fmt::format("**{} at {} mph**\n\n| quantity | report |", row.label, row.speedMph);
-        for (const auto& m : allModels) md += " " + m + " |";
-        md += " describing function |\n|---|---|";
-        for (size_t k = 0; k <= allModels.size(); ++k) md += "---|";
-        md += "\n";
-        for (int q = 0; q < 5; ++q) {
-            md += fmt::format("| {} | {:g} |", qty[q], row.report[q]);
-            for (size_t m = 0; m < allModels.size(); ++m) {
-                const double v = values[i][m][q];
-                md += fmt::format(" {} ({}) |", q < 2 ? fmt::format("{:.2f}", v) : fmt::format("{:.0f}", v), fmtPct(v, row.report[q]));
-                meta["table3"].push_back({{"condition", row.label}, {"quantity", qty[q]}, {"model", allModels[m]}, {"value", v}, {"report", row.report[q]}});
-            }
-            // The describing function gives roll amplitude, wheel load and side bearing (not lift in inches).
-            const int dfIndex = q == 0 ? 0 : q == 2 ? 1 : q == 3 ? 2 : -1;
-            if (df && dfIndex >= 0) {
-                const double v = (*df)[dfIndex];
-                md += fmt::format(" {} ({}) |", q == 0 ? fmt::format("{:.2f}", v) : fmt::format("{:.0f}", v), fmtPct(v, row.report[q]));
-            } else {
-                md += row.car == "70ton-loaded" && df ? " — |" : " n/a |";
-            }
-            md += "\n";
+                if (std::abs(a - row.amplitudeIn) < 1e-9) {
+                    if (const auto df = findSteadyAt(branches, row.speedMph, !s.quick))
+                        md += fmt::format("| describing function | {} | {:g} | — | {:.2f} ({}) | — | {:.0f} ({}) | {:.0f} ({}) | — |\n",
+                                          s.quick ? "largest solution" : "largest stable solution", row.speedMph,
+                                          (*df)[0], fmtPct((*df)[0], row.report[0]), (*df)[1], fmtPct((*df)[1], row.report[2]),
+                                          (*df)[2], fmtPct((*df)[2], row.report[3]));
+                    else
+                        md += fmt::format("| describing function | no {}solution traced at this speed | {:g} | | | | | | |\n",
+                                          s.quick ? "" : "stable ", row.speedMph);
+                }
+        md += "\nWhole run:\n\n" + formatBranchTable(rows, columns, published, false) + "\n";
+        for (const auto& r : rows) {
+            if (!r.summary) continue;
+            const auto st = getSteadyTableValues(*r.summary), whole = getTableValues(*r.summary);
+            for (int q = 0; q < 5; ++q)
+                meta["table3"].push_back({{"condition", row.label}, {"quantity", columns[q].header}, {"model", r.model},
+                                          {"start", r.start}, {"speed_mph", r.speedMph}, {"steady", st[q]},
+                                          {"whole_run", whole[q]}, {"report", row.report[q]}});
         }
-        md += "\n";
     }
-    md += "The describing-function column is its largest solution at that speed (stable only, in the full run), "
-          "for the 70-ton loaded car it was traced for (section 5); its roll is an amplitude (half peak-to-peak).\n\n";
-    md += "Why the large differences: (1) wheel lift — the reduced model (ours and the report's) lifts a wheel by "
-          "inches, the Simbody models and the eom twin by tenths of an inch; section 10 attributes the difference by "
-          "changing one factor at a time. (2) Forces — "
-          "the report quotes peaks of its own reduced model; ours are 20 Hz filtered maxima, and how much they move "
-          "with the assumed contact stiffness is measured in section 7. (3) Roll at a given speed depends on the branch: "
-          "a run from rest and a sweep from above can sit on different branches (section 2), and the report's jump "
-          "speed differs a little from ours. No parameter was tuned to any of these numbers.\n\n";
+    md += "The describing-function row is its largest solution at the report's speed (section 5): roll is its harmonic "
+          "amplitude (half peak-to-peak), and the loads come from its time-domain twin integrated from the harmonic "
+          "solution and filtered at 20 Hz, never from the truncated series itself.\n\n";
+    md += "Where the models differ from the report: (1) wheel lift — the reduced model (ours and the report's) lifts "
+          "a wheel by inches, the Simbody models and the eom twin by tenths of an inch; section 10 attributes the "
+          "difference by changing one factor at a time. (2) Forces — how much they move with the assumed contact "
+          "stiffness is measured in section 7. (3) Roll at a given speed depends on the branch: compare the rows "
+          "on the branch the report's number is on. No parameter was tuned to any of these numbers.\n\n";
     return md;
 }
 

@@ -8,65 +8,40 @@ namespace rockroll::app {
 
 using namespace validate_detail;
 
-std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps) {
+std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps, const ResidualUncertainty& u) {
     const Mit1976& ref = Mit1976::get();
     const std::string car = ref.text("table4.car");
     const double amplitudeIn = ref("table4.amplitude", "in");
     const std::array<double, 2> speeds{ref("table4.aar_speed", "mph"), ref("table4.reduced_speed", "mph")};
-    const std::vector<std::string> allModels{model_names::kFullCar, model_names::kHalfCar, model_names::kEom, model_names::kReduced};
+    const std::array<const char*, 2> sources{"AAR detailed model", "report's reduced model"};
+    const std::array<const char*, 2> prefixes{"aar", "reduced"};
+    const std::vector<std::string>& models = getComparedModels();
     std::string md = fmt::format("## 4. The report's Table 4 ({}, {:g} in: AAR detailed model against its reduced model)\n\n",
                                  car == "70ton-loaded" ? "70-ton loaded" : car, amplitudeIn);
-    md += fmt::format("Same sources as Table 3, at {:g} mph (the AAR model's speed) and {:g} mph (the reduced model's).\n\n",
-                      speeds[0], speeds[1]);
-    md += fmt::format("| quantity | AAR, {:g} mph | report reduced, {:g} mph |", speeds[0], speeds[1]);
-    for (const auto& m : allModels) md += fmt::format(" {} {:g} / {:g} |", m, speeds[0], speeds[1]);
-    md += "\n|---|---|---|";
-    for (size_t k = 0; k < allModels.size(); ++k) md += "---|";
-    md += "\n";
-    // t4[model][speed]: a sweep's maxima there, or one run from rest at the scenario's amplitude.
-    std::vector<std::array<std::array<double, 5>, 2>> t4(allModels.size());
-    std::vector<std::function<void()>> jobs;
-    for (size_t m = 0; m < allModels.size(); ++m)
-        for (int k = 0; k < 2; ++k) {
-            const double mph = speeds[k];
-            if (auto v = findSweepValues(sweeps, car, amplitudeIn, allModels[m], mph)) {
-                t4[m][k] = *v;
-                continue;
-            }
-            jobs.push_back([&, m, k, mph] {
-                Scenario sc = loadCar(car);
-                sc.model = allModels[m];
-                sc.speed = mph * units::mph;
-                sc.run.duration = s.runDuration;
-                sc.run.outputRate = 100;
-                t4[m][k] = getTableValues(runScenario(sc).summary);
-            });
-        }
-    runJobs(jobs, s.jobs);
-    struct Row {
-        const char* label;
-        int q;            ///< index into getTableValues
-        const char* key;  ///< table4.aar_<key> and table4.reduced_<key>
-        const char* unit;
-    };
-    const std::array<Row, 4> rows{{{"roll, deg", 0, "max_roll", "deg"},
-                                   {"wheel force, 10³ lb", 2, "max_wheel_load", "kip"},
-                                   {"center plate force, 10³ lb", 4, "max_center_plate_load", "kip"},
-                                   {"side bearing force, 10³ lb", 3, "max_side_bearing_load", "kip"}}};
-    for (const auto& row : rows) {
-        const int q = row.q;
-        const double scale = q == 0 ? 1 : 1e-3;
-        const std::array<double, 2> published{ref(fmt::format("table4.aar_{}", row.key), row.unit),
-                                              ref(fmt::format("table4.reduced_{}", row.key), row.unit)};
-        md += fmt::format("| {} | {:g} | {:g} |", row.label, published[0], published[1]);
-        for (size_t m = 0; m < allModels.size(); ++m)
-            md += fmt::format(" {:.1f} ({}) / {:.1f} ({}) |", t4[m][0][q] * scale, fmtPct(t4[m][0][q] * scale, published[0]),
-                              t4[m][1][q] * scale, fmtPct(t4[m][1][q] * scale, published[1]));
-        md += "\n";
+    md += fmt::format("At {:g} mph (the AAR model's speed) and {:g} mph (the report's reduced model's), each against the "
+                      "published column of that speed. {}\n\n",
+                      speeds[0], speeds[1], describeStatistics(s));
+    if (!u.describe().empty()) md += u.describe() + "\n\n";
+    std::vector<RestRun> restRuns;
+    for (double mph : speeds)
+        for (const auto& m : models) restRuns.push_back({car, amplitudeIn, mph, m});
+    const std::vector<RunSummary> fromRest = runFromRest(s, restRuns);
+    // Table 4's rows, in its order: roll, wheel, center plate, side bearing (10³ lb).
+    const std::vector<BranchColumn> columns{{"roll, deg", 0, 1, 1},
+                                            {"wheel force (2 wheels, 1 side), 10³ lb", 2, 1e-3, 1},
+                                            {"center plate force, 10³ lb", 4, 1e-3, 1},
+                                            {"side bearing force, 10³ lb", 3, 1e-3, 1}};
+    const std::array<std::pair<const char*, const char*>, 4> keys{
+        {{"max_roll", "deg"}, {"max_wheel_load", "kip"}, {"max_center_plate_load", "kip"}, {"max_side_bearing_load", "kip"}}};
+    for (int k = 0; k < 2; ++k) {
+        std::vector<double> published;
+        for (const auto& [key, unit] : keys) published.push_back(ref(fmt::format("table4.{}_{}", prefixes[k], key), unit));
+        const std::vector<BranchRow> rows = collectBranchRows(sweeps, car, amplitudeIn, speeds[k], models, fromRest);
+        md += fmt::format("**{:g} mph, against the {}**\n\nSteady part:\n\n{}\nWhole run:\n\n{}\n", speeds[k], sources[k],
+                          formatBranchTable(rows, columns, published, true), formatBranchTable(rows, columns, published, false));
     }
-    md += fmt::format("\nThe report found its two programs within {} % on forces in severe rocking; differences per cell above are "
-                      "against the AAR column at {:g} mph and the report's reduced model at {:g} mph.\n\n",
-                      formatPublished(ref("table4.force_agreement", "%")), speeds[0], speeds[1]);
+    md += fmt::format("The report found its two programs within {} % on forces in severe rocking.\n\n",
+                      formatPublished(ref("table4.force_agreement", "%")));
     return md;
 }
 

@@ -17,35 +17,55 @@ std::vector<double> getColumn(const TimeHistory& h, int channel) {
     return c;
 }
 
-double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
-double minOf(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+/// Extremes of the samples from index `from` on (the whole record is filtered first,
+/// so a window's values are the filtered record's, not a restarted filter's).
+double maxOf(const std::vector<double>& v, size_t from = 0) { return *std::max_element(v.begin() + from, v.end()); }
+double minOf(const std::vector<double>& v, size_t from = 0) { return *std::min_element(v.begin() + from, v.end()); }
 
 struct Extremes {
     double filteredMax = -std::numeric_limits<double>::infinity();
     double rawMax = -std::numeric_limits<double>::infinity();
 };
 
-Extremes maxOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f) {
+Extremes maxOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f, size_t from = 0) {
     Extremes e;
     for (int c : channels) {
         const auto x = getColumn(h, c);
-        e.rawMax = std::max(e.rawMax, maxOf(x));
-        e.filteredMax = std::max(e.filteredMax, maxOf(f.apply(x)));
+        e.rawMax = std::max(e.rawMax, maxOf(x, from));
+        e.filteredMax = std::max(e.filteredMax, maxOf(f.apply(x), from));
     }
     return e;
 }
 
 /// Largest absolute value over the channels, filtered and raw; NaN for no channel.
-Extremes maxAbsOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f) {
+Extremes maxAbsOverChannels(const TimeHistory& h, const std::vector<int>& channels, const LowPassFilter& f,
+                            size_t from = 0) {
     if (channels.empty())
         return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     Extremes e{0, 0};
     for (int c : channels) {
         const auto x = getColumn(h, c);
         const auto y = f.apply(x);
-        e.rawMax = std::max({e.rawMax, maxOf(x), -minOf(x)});
-        e.filteredMax = std::max({e.filteredMax, maxOf(y), -minOf(y)});
+        e.rawMax = std::max({e.rawMax, maxOf(x, from), -minOf(x, from)});
+        e.filteredMax = std::max({e.filteredMax, maxOf(y, from), -minOf(y, from)});
     }
+    return e;
+}
+
+/// The first sample at or after time t (the last sample when none is).
+size_t findSample(const TimeHistory& h, double t) {
+    size_t i = 0;
+    while (i + 1 < h.samples.size() && h.samples[i][0] < t) ++i;
+    return i;
+}
+
+/// The unloading maxima of a layout's channels from sample `from` on (NaN without channels).
+Extremes calcUnloading(const TimeHistory& h, const ChannelLayout& layout, const LowPassFilter& filter, size_t from) {
+    if (layout.wheelUnloading.empty())
+        return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    Extremes e = maxOverChannels(h, layout.wheelUnloading, filter, from);
+    // A load cannot be negative, so unloading cannot exceed 1; the filter's overshoot can.
+    e.filteredMax = std::min(1.0, e.filteredMax);
     return e;
 }
 }  // namespace
@@ -79,13 +99,15 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.peakToPeakRollDeg = maxOf(roll) - minOf(roll);
     const double tEnd = h.samples.back()[0];
     const double window = std::min(opt.steadyCycles * opt.forcingPeriod, tEnd / 2);
-    double hi = -1e300, lo = 1e300;
-    for (size_t i = 0; i < roll.size(); ++i)
-        if (h.samples[i][0] >= tEnd - window) {
-            hi = std::max(hi, roll[i]);
-            lo = std::min(lo, roll[i]);
-        }
-    r.steadyRollAmplitudeDeg = (hi - lo) / 2;
+    const size_t steadyFrom = findSample(h, tEnd - window);
+    r.steadyRollAmplitudeDeg = (maxOf(roll, steadyFrom) - minOf(roll, steadyFrom)) / 2;
+    r.steady.windowS = tEnd - h.samples[steadyFrom][0];
+    r.steady.cycles = opt.steadyCycles;
+    r.steady.rollDeg = std::max(std::abs(maxOf(roll, steadyFrom)), std::abs(minOf(roll, steadyFrom)));
+    for (int c : layout.wheelLift) r.steady.wheelLiftIn = std::max(r.steady.wheelLiftIn, maxOf(getColumn(h, c), steadyFrom));
+    r.steady.truckSideWheelLoadLb = maxOverChannels(h, layout.truckSideWheelLoad, filter, steadyFrom).filteredMax;
+    r.steady.sideBearingLoadLb = maxOverChannels(h, layout.sideBearing, filter, steadyFrom).filteredMax;
+    r.steady.centerPlateLoadLb = maxOverChannels(h, layout.centerPlate, filter, steadyFrom).filteredMax;
 
     for (int c : layout.wheelLift) r.maxWheelLiftIn = std::max(r.maxWheelLiftIn, maxOf(getColumn(h, c)));
 
@@ -110,6 +132,13 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
         // A load cannot be negative; the filter's undershoot near zero can.
         r.minWheelLoadRatio = std::min(r.minWheelLoadRatio, std::max(0.0, minOf(filter.apply(x))) / staticLoad);
     }
+    // Real single wheels carry SingleWheelLoad alone; the half-car models' equivalent
+    // wheel is one truck side's two wheels, and says so.
+    std::vector<int> realWheels;
+    for (int c : layout.singleWheelLoad)
+        if (!hasRole(layout.channels[c].roles, ChannelRole::TruckSideWheelLoad)) realWheels.push_back(c);
+    r.wheelLoadBasis = realWheels.empty() && !layout.singleWheelLoad.empty() ? "truck side" : "single wheel";
+    if (!realWheels.empty()) r.maxSingleWheelLoadLb = maxOverChannels(h, realWheels, filter).filteredMax;
     r.staticWheelLoadLb = staticRow[layout.truckSideWheelLoad.front() + 1];
     r.staticCenterPlateLoadLb = staticRow[layout.centerPlate.front() + 1];
 
@@ -129,15 +158,11 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
         r.wheelLiftLongestS = std::max(r.wheelLiftLongestS, calcDurations(lifted, dt).longest);
     }
     r.energyBalanceError = calcEnergyBalanceError(h, layout);
+    r.worstEnergyBalanceError = calcWorstEnergyBalanceError(h, layout, opt.energyWorstFromS);
 
-    if (layout.wheelUnloading.empty()) {
-        r.maxWheelUnloading = r.rawMaxWheelUnloading = std::numeric_limits<double>::quiet_NaN();
-    } else {
-        const Extremes unloading = maxOverChannels(h, layout.wheelUnloading, filter);
-        // A load cannot be negative, so unloading cannot exceed 1; the filter's overshoot can.
-        r.maxWheelUnloading = std::min(1.0, unloading.filteredMax);
-        r.rawMaxWheelUnloading = unloading.rawMax;
-    }
+    const Extremes unloading = calcUnloading(h, layout, filter, 0);
+    r.maxWheelUnloading = unloading.filteredMax;
+    r.rawMaxWheelUnloading = unloading.rawMax;
     const Extremes lv = maxAbsOverChannels(h, layout.lOverV, filter);
     r.maxLOverV = lv.filteredMax;
     r.rawMaxLOverV = lv.rawMax;
@@ -159,7 +184,16 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
                 t.maxSideBearingLoadLb[side++] = maxOf(filter.apply(getColumn(h, b)));
         r.trucks.push_back(t);
     }
-    r.criteria = evaluateCriteria(r, opt.criteria);
+    // The criteria: the same values over the run's time on the perturbed track only.
+    const size_t criteriaFrom = findSample(h, opt.criteriaFromS);
+    r.criteriaFromS = h.samples[criteriaFrom][0];
+    RunSummary judged = r;
+    judged.peakToPeakRollDeg = maxOf(roll, criteriaFrom) - minOf(roll, criteriaFrom);
+    judged.maxWheelUnloading = calcUnloading(h, layout, filter, criteriaFrom).filteredMax;
+    judged.maxLOverV = maxAbsOverChannels(h, layout.lOverV, filter, criteriaFrom).filteredMax;
+    judged.maxCarBodyVerticalAccelG = maxAbsOverChannels(h, layout.carBodyVerticalAccel, filter, criteriaFrom).filteredMax;
+    judged.maxCarBodyLateralAccelG = maxAbsOverChannels(h, layout.carBodyLateralAccel, filter, criteriaFrom).filteredMax;
+    r.criteria = evaluateCriteria(judged, opt.criteria);
     r.regime = classifyRegime(r.centerPlateSeparationLongestS, sideBearingContact, opt.severeSeparationTime);
     if (run.stop) {
         r.regime = run.stop->regime;
@@ -180,6 +214,16 @@ std::vector<Criterion> evaluateCriteria(const RunSummary& s, const CriteriaLimit
             {"l_over_v", "ratio", s.maxLOverV, l.lOverV},
             {"car_body_vertical_accel", "g", s.maxCarBodyVerticalAccelG, l.carBodyVerticalAccelG},
             {"car_body_lateral_accel", "g", s.maxCarBodyLateralAccelG, l.carBodyLateralAccelG}};
+}
+
+std::vector<Criterion> rejudgeCriteria(const std::vector<Criterion>& judged, const CriteriaLimits& limits) {
+    std::vector<Criterion> out = evaluateCriteria(RunSummary{}, limits);
+    for (Criterion& c : out) {
+        c.value = std::numeric_limits<double>::quiet_NaN();
+        for (const Criterion& j : judged)
+            if (j.name == c.name) c.value = j.value;
+    }
+    return out;
 }
 
 bool RunSummary::passesCriteria() const {

@@ -49,18 +49,42 @@ struct RunSummary {
     double maxWheelLiftIn = 0;
     // Filtered maxima (headline) and raw peaks.
     double maxWheelLoadLb = 0, rawMaxWheelLoadLb = 0;          ///< two wheels, one truck side
-    double minWheelLoadRatio = 0, rawMinWheelLoadRatio = 0;    ///< single wheel / static
+    /// One real wheel's largest load [lb]; NaN where the model has no single wheels
+    /// (the half-car models' equivalent wheelset carries one truck side's two wheels).
+    double maxSingleWheelLoadLb = std::numeric_limits<double>::quiet_NaN();
+    double minWheelLoadRatio = 0, rawMinWheelLoadRatio = 0;    ///< lowest wheel load / static, per wheelLoadBasis
+    /// What the wheel-load ratio and unloading are taken over: "single wheel" (one
+    /// real wheel) or "truck side" (the two wheels of one truck side, the half-car
+    /// models' equivalent wheel).
+    std::string wheelLoadBasis = "single wheel";
     double maxSideBearingLoadLb = 0, rawMaxSideBearingLoadLb = 0;
     double maxCenterPlateLoadLb = 0, rawMaxCenterPlateLoadLb = 0;
     double staticWheelLoadLb = 0;        ///< two wheels, one truck side
     double staticCenterPlateLoadLb = 0;
     std::string regime;                  ///< light | moderate | severe | derailed | overturned
+    /// Maxima over the steady part of the run: the last SummaryOptions::steadyCycles
+    /// forcing periods (at most the second half of the run), on the same 20 Hz filtered
+    /// channels as the whole-run maxima above (docs/validation.md, "Statistics").
+    struct SteadyMaxima {
+        double windowS = 0;                  ///< length of the window, ending at the run's end [s]
+        int cycles = 0;                      ///< forcing periods asked for (the window may be shorter)
+        double rollDeg = 0;                  ///< largest |roll|
+        double wheelLiftIn = 0;
+        double truckSideWheelLoadLb = 0;     ///< two wheels, one truck side
+        double sideBearingLoadLb = 0;
+        double centerPlateLoadLb = 0;
+    } steady;
+    /// Start of the stretch the criteria are evaluated over: the run's own time on the
+    /// perturbed track, without the level lead-in and a sweep point's speed ramp [s].
+    double criteriaFromS = 0;
     double centerPlateSeparationLongestS = 0;  ///< longest unbroken full unloading of a center plate [s]
     double centerPlateSeparationTotalS = 0;    ///< a center plate's total unloaded time (the larger truck) [s]
     double wheelLiftLongestS = 0;              ///< longest unbroken lift of any wheel [s]
     double stoppedAtS = -1;              ///< < 0: ran to the end; else when a run limit stopped it [s]
     std::string stopReason;              ///< what stopped it, with values and limit
-    double energyBalanceError = std::numeric_limits<double>::quiet_NaN();  ///< |W − ΔE − D| / max(|W|, D); NaN: not audited
+    double energyBalanceError = std::numeric_limits<double>::quiet_NaN();  ///< |W − ΔE − D| / max(|W|, D) at the end; NaN: not audited
+    /// The same ratio's largest value over the run, from SummaryOptions::energyWorstFromS on.
+    double worstEnergyBalanceError = std::numeric_limits<double>::quiet_NaN();
     // Freight channels: filtered (headline) and raw peaks of the absolute values.
     // NaN: the model has no such channel (L/V without lateral wheel forces).
     double maxWheelUnloading = 0, rawMaxWheelUnloading = 0;  ///< (static − load)/static, filtered ≤ 1
@@ -89,10 +113,20 @@ struct SummaryOptions {
     double severeSeparationTime = 0.010;
     std::vector<double> staticReference;  ///< history row of the static state; empty: the run's first sample
     CriteriaLimits criteria;
+    /// The criteria, their peak-to-peak roll among them, are taken over t ≥ criteriaFromS:
+    /// the numerical devices before it (level lead-in, a sweep point's speed ramp) are
+    /// not track the car runs on [s].
+    double criteriaFromS = 0;
+    /// The worst energy-balance error is taken over t ≥ this (before, W and D are still
+    /// tiny and their ratio is noise) [s].
+    double energyWorstFromS = 0.5;
 };
 
 /// The criteria list of a summary's values against `limits`, in a fixed order.
 std::vector<Criterion> evaluateCriteria(const RunSummary& s, const CriteriaLimits& limits);
+/// A run's judged criteria (RunSummary::criteria, taken over its criteria window)
+/// against other limits: the same values, in evaluateCriteria's order.
+std::vector<Criterion> rejudgeCriteria(const std::vector<Criterion>& judged, const CriteriaLimits& limits);
 
 /// Longest unbroken stretch and total time with `on[i]` true, on samples spaced
 /// `dt` apart: each sample stands for dt, so one sample counts dt.

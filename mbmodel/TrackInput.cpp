@@ -173,6 +173,14 @@ RailPoint TrackInput::calcRails(double s) const {
     return p;
 }
 
+double TrackInput::calcLeadInDistance() const {
+    const auto& m = spec_.measured;
+    if (m.empty() || !isLevel(m.front())) return 0.0;
+    size_t i = 0;
+    while (i + 1 < m.size() && isLevel(m[i + 1])) ++i;
+    return i + 1 == m.size() ? 0.0 : m[i].distance;  // a level table has no lead-in to leave out
+}
+
 RailPoint TrackInput::calcRectifiedSine(double s) const {
     RailPoint p;
     const double L = spec_.railLength, A = spec_.amplitude;

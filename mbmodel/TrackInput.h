@@ -98,6 +98,10 @@ public:
         return p.z[1] - p.z[0];
     }
     const TrackSpec& getSpec() const { return spec_; }
+    /// The level lead-in: the distance s from 0 up to which the rails stay level
+    /// (0 for the rectified sine, which starts to move just after s = 0; for a
+    /// measured table, its leading level rows; 0 for a track that is level throughout) [m].
+    double calcLeadInDistance() const;
 
 private:
     RailPoint calcRectifiedSine(double s) const;

@@ -55,6 +55,10 @@ TEST(SpeedSweep, ContinuedRunStartsWhereThePreviousEnded) {
         EXPECT_EQ(first.restart.speed, a.speed) << model;
         EXPECT_EQ(first.restart.model, model);
         EXPECT_EQ(second.summary.staticWheelLoadLb, first.summary.staticWheelLoadLb) << model;
+        // The criteria leave out the continued run's speed ramp, and nothing of a run from rest
+        // on the rectified sine (docs/validation.md, "Statistics").
+        EXPECT_EQ(first.summary.criteriaFromS, 0.0) << model;
+        EXPECT_NEAR(second.summary.criteriaFromS, start.rampTime, 0.011) << model;
     }
 }
 
