@@ -180,8 +180,8 @@ nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
 nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points) {
     nlohmann::ordered_json records = nlohmann::ordered_json::array();
     for (const nlohmann::ordered_json& p : points) {
-        // One flat row per speed: the per-truck loads and the criteria become columns
-        // named with their truck or criterion and their unit.
+        // One flat row per speed: the per-truck loads, the criteria and the steady-part
+        // maxima become columns named with their truck, criterion or "steady_" and their unit.
         nlohmann::ordered_json r = nlohmann::ordered_json::object();
         for (const auto& [key, value] : p.items()) {
             if (key == "provenance") continue;
@@ -196,6 +196,8 @@ nlohmann::ordered_json makeSweepRecords(const nlohmann::ordered_json& points) {
                     r[fmt::format("criterion_{}_limit_{}", name, unit)] = c.at("limit");
                     r[fmt::format("criterion_{}_pass", name)] = c.at("pass");
                 }
+            } else if (key == "steady" && value.is_object()) {
+                for (const auto& [field, v] : value.items()) r["steady_" + field] = v;
             } else {
                 r[key] = value;
             }

@@ -64,7 +64,7 @@ std::string describeStatistics(const Settings& s) {
         "--amplitude-in A --speed-mph V --duration-s {}`), or the point of section 2's **up sweep** or **down sweep** "
         "nearest the report's speed (its speed is given); every cell of a row comes from that run. Two statistics, the "
         "same for every model, each in its own table: the **steady part**, the maxima over the last {} forcing periods "
-        "of the run (at most its second half), and the **whole run**, the maxima from t = 0 (a sweep point's include "
+        "of the run (at most its second half), and the **whole run**, the maxima from t = 0 (a sweep point's maxima include "
         "its 1 s speed ramp and any jump transient). Roll is the largest |roll|, wheel lift the largest lift of any "
         "wheel, and every load is the 20 Hz filtered maximum; the wheel load is one truck side's two wheels in every "
         "model (the half-car models' equivalent wheel; the full car's single-wheel values are in section 8). A model "
