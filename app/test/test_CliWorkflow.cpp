@@ -145,12 +145,15 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
         EXPECT_EQ(table.find("provenance"), -1);
         ASSERT_NE(table.find("speed_mph"), -1);
         EXPECT_EQ(table.numbers("speed_mph"), (std::vector<double>{14, 15}));
-        // The per-truck loads and the criteria are columns named by truck or criterion and unit.
+        // The per-truck loads, the criteria and the steady-part maxima are columns named by
+        // truck, criterion or "steady_" and unit.
         nlohmann::json flat = nlohmann::json::array();
         for (const auto& p : json) {
             nlohmann::json r = p;
             r.erase("trucks");
             r.erase("criteria");
+            r.erase("steady");
+            for (const auto& [field, v] : p.at("steady").items()) r["steady_" + field] = v;
             for (const auto& t : p.at("trucks"))
                 for (const auto& [field, v] : t.items())
                     if (field != "truck") r["truck_" + t.at("truck").get<std::string>() + "_" + field] = v;
@@ -166,6 +169,8 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
         ASSERT_NE(table.find("criterion_roll_peak_to_peak_deg"), -1);
         ASSERT_NE(table.find("criterion_wheel_unloading_pass"), -1);
         EXPECT_EQ(table.find("trucks"), -1);
+        ASSERT_NE(table.find("steady_max_side_bearing_load_lb"), -1);
+        EXPECT_EQ(table.find("steady"), -1);
         expectCsvMatchesJson(table, flat);
     }
     {
