@@ -74,10 +74,9 @@ std::string formatReportSweepCase(const Mit1976& ref, const std::string& car, do
     auto mph = [&](const char* name) { return formatPublished(ref.value(k + name, "mph")) + " mph"; };
     auto deg = [&](const char* name) { return formatPublished(ref.value(k + name, "deg")) + "°"; };
     const std::string figures = ref.text(k + "figures");
-    std::string out = fmt::format("{} {} ({}, {} in", figures.find(',') == std::string::npos ? "Figure" : "Figures",
-                                  figures, car, formatPublished(ref(k + "amplitude", "in")));
-    if (ref.hasText(k + "statistic")) out += "; plotted: " + ref.text(k + "statistic");
-    out += "): ";
+    std::string out = fmt::format("{} {}", figures.find(',') == std::string::npos ? "Figure" : "Figures", figures);
+    if (ref.hasText(k + "statistic")) out += " (plotted: " + ref.text(k + "statistic") + ")";
+    out += ": ";
     std::vector<std::string> parts;
     // Speed increasing: light rocking, the jumps up, how far severe rocking persists.
     std::vector<std::string> jumps;

@@ -20,10 +20,10 @@ double calcWheelLoadGrowth(const TimeHistory& h, double earlyFrom, double earlyT
 std::string formatBesideSection3_1(const RunSummary& s, const TimeHistory& h);
 
 /// What the report says of one roll-against-speed case: the [[sweeps]] table of `ref` whose
-/// car and amplitude match, as one sentence that names the case's figures, e.g. for the
-/// 70-ton loaded car at 1.0 in (Figure 11) its jump speeds up and down; for a case of which
-/// the report gives no jump speed the sentence says "the report gives no jump speeds".
-/// Empty when `ref` holds no such case.
+/// car and amplitude match, as one sentence that starts with the case's figures, e.g. for the
+/// 70-ton loaded car at 1.0 in "Figures 11, 17 (plotted: ...): speed increasing, ..." with its
+/// jump speeds up and down; for a case of which the report gives no jump speed the sentence
+/// says "the report gives no jump speeds". Empty when `ref` holds no such case.
 std::string formatReportSweepCase(const Mit1976& ref, const std::string& car, double amplitudeIn);
 
 }  // namespace rockroll::app

@@ -71,7 +71,7 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
     md += fmt::format("\nThe report's describing function (§4.3, Figure 31), speed increasing from {} mph, leaves its lowest "
                       "curve at {}, {} and {} mph for 0.5, 0.75 and 1.0 in. Speed decreasing from {} mph, its highest set of "
                       "curves extends to {} mph (±{}° there); its digital simulation could not obtain that curve below {} mph "
-                      "(§4.3, Figure 34, 0.75 in). Our time-domain twin does not stay on it either (docs/bespoke.md), so we "
+                      "(§4.3, Figure 34). Our time-domain twin does not stay on it either (docs/bespoke.md), so we "
                       "mark it unstable.\n\n",
                       formatPublished(ref("describing_function.sweep_from", "mph")),
                       formatPublished(ref("describing_function.jump_up_0_50in", "mph")),

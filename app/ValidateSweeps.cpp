@@ -147,7 +147,7 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
                       "all the way down, as the report's describing function does (§4.3, Figure 31: its highest set of "
                       "curves extends to {} mph, ±{}° there) but its digital simulation did not: \"For speeds below {} mph, "
                       "digital simulation program solutions could not be obtained for the highest level of response "
-                      "curve\" (§4.3, Figure 34, 0.75 in).\n",
+                      "curve\" (§4.3, Figure 34).\n",
                       fmt::join(ends, "; "),
                       formatPublished(ref("describing_function.high_branch_lowest_speed", "mph")),
                       formatPublished(ref("describing_function.high_branch_roll", "deg")),
@@ -155,9 +155,10 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
     // Each swept case beside what the report's §3.2 says of the figure that holds it
     // (mit1976.toml [[sweeps]]). Figure 11 plots the maximum roll of each run, so the
     // largest max roll of the swept runs is given beside the jump speeds.
-    md += "\nThe report's numbers (§3.2) for each swept case, beside the sweeps here (jump up / jump down, mph; "
-          "largest max roll of a run in either sweep, deg). The jump speed here is where the steady roll amplitude "
-          "rises most between neighbouring speeds (up) or falls most (down); the band between them is the hysteresis.\n\n";
+    md += "\nEach swept case beside what the report's §3.2 says of the figure that holds it. \"Here\" gives each "
+          "model's jump speeds (where the steady roll amplitude rises most between neighbouring speeds, up, or falls "
+          "most, down; the band between them is the hysteresis) and the largest max roll of its runs in either sweep, "
+          "the statistic Figure 11 plots.\n\n";
     for (const auto& c : kSweepCases) {
         const std::string report = formatReportSweepCase(ref, c.car, c.amplitudeIn);
         std::vector<std::string> ours;
@@ -167,12 +168,13 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
             for (const auto* l : {&r.up, &r.down})
                 for (const auto& p : *l)
                     if (!p.failed) maxRoll = std::max(maxRoll, p.summary.maxRollDeg);
-            ours.push_back(fmt::format("{} {} / {}, {:.2f}", r.model,
-                                       std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f}", r.jumpUpMph) : "none",
-                                       std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f}", r.jumpDownMph) : "none", maxRoll));
+            ours.push_back(fmt::format("{} up {}, down {}, largest max roll {:.2f}°", r.model,
+                                       std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f} mph", r.jumpUpMph) : "none",
+                                       std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f} mph", r.jumpDownMph) : "none",
+                                       maxRoll));
         }
-        md += fmt::format("- {} {:.2f} in. Report: {}. Here: {}.\n", c.car, c.amplitudeIn,
-                          report.empty() ? fmt::format("mit1976.toml holds no case of Figure {}", c.figure) : report,
+        md += fmt::format("- **{} {:.2f} in.** {}. Here: {}.\n", c.car, c.amplitudeIn,
+                          report.empty() ? fmt::format("Figure {}: mit1976.toml holds nothing of this case", c.figure) : report,
                           ours.empty() ? std::string("not swept") : fmt::format("{}", fmt::join(ours, "; ")));
     }
     md += "\n";
