@@ -68,15 +68,19 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
                           lo <= hi ? fmt::format("{:.1f}–{:.1f}", lo, hi) : "none");
         meta["steady"].push_back({{"amplitude_in", amps[i]}, {"file", file}, {"sweep_key", fmt::format("70ton-loaded_{:.2f}in", amps[i])}});
     }
-    md += fmt::format("\nThe report's describing function jumps up at {}, {} and {} mph for 0.5, 0.75 and 1.0 in. Its highest "
-                      "branch, drawn stable to {} mph (±{}°), was never reached by its own simulation below {} mph; our "
-                      "time-domain twin does not stay on it either (docs/bespoke.md), so we mark it unstable.\n\n",
+    md += fmt::format("\nThe report's describing function (§4.3, Figure 31), speed increasing from {} mph, leaves its lowest "
+                      "curve at {}, {} and {} mph for 0.5, 0.75 and 1.0 in. Speed decreasing from {} mph, its highest set of "
+                      "curves extends to {} mph (±{}° there); its digital simulation could not obtain that curve below {} mph "
+                      "(§4.3, Figure 34). Our time-domain twin does not stay on it either (docs/bespoke.md), so we "
+                      "mark it unstable.\n\n",
+                      formatPublished(ref("describing_function.sweep_from", "mph")),
                       formatPublished(ref("describing_function.jump_up_0_50in", "mph")),
                       formatPublished(ref("describing_function.jump_up_0_75in", "mph")),
                       formatPublished(ref("describing_function.jump_up_1_00in", "mph")),
+                      formatPublished(ref("describing_function.high_branch_from", "mph")),
                       formatPublished(ref("describing_function.high_branch_lowest_speed", "mph")),
                       formatPublished(ref("describing_function.high_branch_roll", "deg")),
-                      formatPublished(ref("describing_function.simulation_never_below", "mph")));
+                      formatPublished(ref("describing_function.simulation_high_branch_not_below", "mph")));
     for (double a : amps) md += fmt::format("![describing function, {:.2f} in](steady_70ton-loaded_{:.2f}in.png)\n", a, a);
     return md + "\n";
 }

@@ -18,7 +18,7 @@ std::string makeHeader(const Settings& s, const std::string& commit, double minu
         "command that made it. Source: the {} MIT report \"{}\"; models: docs/model.md (Simbody full and half car) and docs/bespoke.md "
         "(equation-of-motion half car, reduced massless-truck simulation, describing function). No parameter was tuned "
         "to match the report.\n\nWall minutes by phase (CPU minutes of this process's threads): {}.\n\n{}\n\n",
-        commit, s.quick ? " --quick" : "", minutes, s.jobs, formatPublished(Mit1976::get()("report.year", "year")),
+        commit, s.quick ? " --quick" : "", minutes, s.jobs, Mit1976::get().text("report.year"),
         Mit1976::get().text("report.title"), fmt::join(parts, ", "),
         s.quick ? "**Quick run**: sweeps use the reduced model only, 1 mph steps, 15 s per speed; the describing function "
                   "traces 0.75 in without stability. The full run (`rockroll validate`) adds Simbody half-car sweeps at 0.5 mph "

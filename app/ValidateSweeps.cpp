@@ -2,6 +2,7 @@
 // 17, 18, 21, 24), with the jump speeds and the hysteresis band. The sweeps' results
 // also feed sections 3, 4 and 9.
 #include "app/Progress.h"
+#include "app/ReportComparison.h"
 #include "app/ValidateSections.h"
 #include "mbmodel/CsvWriter.h"
 
@@ -13,8 +14,11 @@ using namespace validate_detail;
 
 namespace {
 
-const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {"70ton-loaded", 0.75, 10, 22, "11, 14"},
-                                         {"70ton-loaded", 1.0, 10, 22, "17"},  {"70ton-empty", 0.75, 24, 40, "18"},
+// `figure`: the report's roll-against-speed figures of the case (§3.2): Figure 17 holds the
+// 70-ton car at 0.5, 0.75 and 1.0 in, Figure 14 the 0.75 in case alone, Figure 11 the 1.0 in
+// case alone; Figure 18 the empty car, Figures 21 and 24 the 100-ton car at 0.75 and 1.0 in.
+const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {"70ton-loaded", 0.75, 10, 22, "14, 17"},
+                                         {"70ton-loaded", 1.0, 10, 22, "11, 17"},  {"70ton-empty", 0.75, 24, 40, "18"},
                                          {"100ton-loaded", 0.75, 8, 18, "21"}, {"100ton-loaded", 1.0, 8, 18, "24"}};
 
 void findJumps(SweepResult& r) {
@@ -163,19 +167,40 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
                                        r.model, r.down.back().summary.steadyRollAmplitudeDeg,
                                        r.up.front().summary.steadyRollAmplitudeDeg));
     md += fmt::format("{}. Where the down sweep ends far above the up sweep, the model holds the high-amplitude branch "
-                      "all the way down, as the report's describing function predicted (its Figure 31, ±{}° at {} mph) but "
-                      "its own simulation never reached.\n", fmt::join(ends, "; "),
+                      "all the way down, as the report's describing function does (§4.3, Figure 31: its highest set of "
+                      "curves extends to {} mph, ±{}° there) but its digital simulation did not: \"For speeds below {} mph, "
+                      "digital simulation program solutions could not be obtained for the highest level of response "
+                      "curve\" (§4.3, Figure 34).\n",
+                      fmt::join(ends, "; "),
+                      formatPublished(ref("describing_function.high_branch_lowest_speed", "mph")),
                       formatPublished(ref("describing_function.high_branch_roll", "deg")),
-                      formatPublished(ref("describing_function.high_branch_lowest_speed", "mph")));
-    md += fmt::format("\nThe report's jump speeds: 70-ton loaded at 0.75 in jumps up near {}–{} mph when accelerating (its "
-                      "Figure 11) and stays on the high branch down to about {} mph when decelerating; the 100-ton car peaks near "
-                      "{} mph; the empty car near {} mph. The jump speed is where the steady roll amplitude rises most between "
-                      "neighbouring speeds (up) or falls most (down); the band between them is the hysteresis.\n\n",
-                      formatPublished(ref("sweeps.loaded70_jump_up_from", "mph")),
-                      formatPublished(ref("sweeps.loaded70_jump_up_to", "mph")),
-                      formatPublished(ref("sweeps.loaded70_jump_down", "mph")),
-                      formatPublished(ref("sweeps.loaded100_peak", "mph")),
-                      formatPublished(ref("sweeps.empty70_peak", "mph")));
+                      formatPublished(ref("describing_function.simulation_high_branch_not_below", "mph")));
+    // Each swept case beside what the report's §3.2 says of the figure that holds it
+    // (mit1976.toml [[sweeps]]). Figure 11 plots the maximum roll of each run, so the
+    // largest max roll of the swept runs is given beside the jump speeds.
+    md += "\nEach swept case beside what the report's §3.2 says of the figure that holds it. \"Here\" gives each "
+          "model's jump speeds (where the steady roll amplitude rises most between neighbouring speeds, up, or falls "
+          "most, down; the band between them is the hysteresis) and the largest max roll of its runs in either sweep, "
+          "the statistic Figure 11 plots.\n\n";
+    for (const auto& c : kSweepCases) {
+        const std::string report = formatReportSweepCase(ref, c.car, c.amplitudeIn);
+        std::vector<std::string> ours;
+        for (const auto& r : sweeps) {
+            if (r.c.car != c.car || r.c.amplitudeIn != c.amplitudeIn) continue;
+            double maxRoll = 0;
+            for (const auto* l : {&r.up, &r.down})
+                for (const auto& p : *l)
+                    if (!p.failed) maxRoll = std::max(maxRoll, p.summary.maxRollDeg);
+            ours.push_back(fmt::format("{} up {}, down {}, largest max roll {:.2f}°", r.model,
+                                       std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f} mph", r.jumpUpMph) : "none",
+                                       std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f} mph", r.jumpDownMph) : "none",
+                                       maxRoll));
+        }
+        md += fmt::format("- **{} {:.2f} in.** {}. Here: {}.\n", c.car, c.amplitudeIn,
+                          report.empty() ? fmt::format("Figure {}: mit1976.toml holds nothing of this case", c.figure) : report,
+                          ours.empty() ? std::string("not swept") : fmt::format("{}", fmt::join(ours, "; ")));
+    }
+    md += "\n";
     for (const auto& c : kSweepCases)
         md += fmt::format("![roll against speed, {} {:.2f} in](sweep_{}.png)\n![loads, {} {:.2f} in](sweep_loads_{}.png)\n\n",
                           c.car, c.amplitudeIn, caseKey(c), c.car, c.amplitudeIn, caseKey(c));

@@ -30,7 +30,10 @@ std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& me
             runs[i] = runScenario(sc);  // at the scenario's 500 Hz: regime durations need the resolution
         });
     runJobs(jobs, s.jobs);
-    std::string md = "## 1. Time histories: 70-ton loaded, 0.75 in, 16.5 mph (report Figures 8–10)\n\n";
+    // The heading names the case that ran (the default scenario), the report's case of §3.1.
+    const Scenario ran = getDefaultScenario();
+    std::string md = fmt::format("## 1. Time histories: 70-ton loaded, {:g} in, {:g} mph (report Figures 8–10)\n\n",
+                                 ran.track.amplitude / units::inch, ran.speed / units::mph);
     md += "Made by `rockroll run scenarios/70ton-loaded.toml --model M` for each model (20 s, from rest); "
           "data `timehistory_<model>.csv`, plot `timehistory.png`.\n\n";
     md += "| quantity | report §3.1 | fullcar | halfcar | eom | reduced |\n|---|---|---|---|---|---|\n";

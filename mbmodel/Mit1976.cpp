@@ -1,6 +1,7 @@
 #include "mbmodel/Mit1976.h"
 #include "mbmodel/DataFiles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -40,8 +41,14 @@ Mit1976::Mit1976(const fs::path& file) : file_(file) {
         throw DataFileError(fmt::format("{}: {} (line {})", file.string(), std::string(e.description()),
                                              e.source().begin.line));
     }
-    // Walks the file: { value, unit, source, page } tables are numbers, { text, source, page }
-    // tables quoted texts, plain strings labels; a bare number is refused (no unit, no source).
+    // Walks the file: { value, unit, qualifier, source, page, quote } tables are numbers,
+    // { text, source, page, quote } tables quoted texts, plain strings labels; a bare number is
+    // refused (no unit, no source), and so is a field of neither list.
+    auto refuseUnknown = [&](const toml::table& t, const std::string& key, std::initializer_list<std::string_view> known) {
+        for (const auto& [k, _] : t)
+            if (std::find(known.begin(), known.end(), k.str()) == known.end())
+                fail(file_, key, fmt::format("unknown field \"{}\"", std::string(k.str())));
+    };
     auto walk = [&](auto&& self, const toml::node& node, const std::string& key) -> void {
         if (const toml::table* t = node.as_table()) {
             if (t->contains("value")) {
@@ -53,16 +60,20 @@ Mit1976::Mit1976(const fs::path& file) : file_(file) {
                 v.qualifier = getString(file_, key, *t, "qualifier", false);
                 v.source = getString(file_, key, *t, "source", true);
                 v.page = getString(file_, key, *t, "page", true);
-                for (const auto& [k, _] : *t)
-                    if (k != "value" && k != "unit" && k != "qualifier" && k != "source" && k != "page")
-                        fail(file_, key, fmt::format("unknown field \"{}\"", std::string(k.str())));
+                v.quote = getString(file_, key, *t, "quote", false);
+                refuseUnknown(*t, key, {"value", "unit", "qualifier", "source", "page", "quote"});
                 values_[key] = v;
                 return;
             }
             if (t->contains("text")) {
-                texts_[key] = getString(file_, key, *t, "text", true);
-                getString(file_, key, *t, "source", true);
-                getString(file_, key, *t, "page", true);
+                PublishedText q;
+                q.text = getString(file_, key, *t, "text", true);
+                q.source = getString(file_, key, *t, "source", true);
+                q.page = getString(file_, key, *t, "page", true);
+                q.quote = getString(file_, key, *t, "quote", false);
+                refuseUnknown(*t, key, {"text", "source", "page", "quote"});
+                texts_[key] = q.text;
+                quotedTexts_[key] = q;
                 return;
             }
             for (const auto& [k, child] : *t) self(self, child, key.empty() ? std::string(k.str()) : key + "." + std::string(k.str()));
@@ -77,7 +88,8 @@ Mit1976::Mit1976(const fs::path& file) : file_(file) {
             texts_[key] = *s;
             return;
         }
-        fail(file_, key, "a bare value: write it as { value = ..., unit = \"...\", source = \"...\", page = \"...\" }");
+        fail(file_, key, "a bare value: write it as { value = ..., unit = \"...\", source = \"...\", page = \"...\", "
+                        "quote = \"...\" }");
     };
     walk(walk, root, "");
 }

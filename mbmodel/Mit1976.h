@@ -1,9 +1,10 @@
 #pragma once
-// The 1976 MIT report's published numbers (Tables 1, 3, 4, §3.1, the jump speeds
-// of its sweep figures and of its describing function), read at run time from the
+// The 1976 MIT report's published numbers (Tables 1, 3, 4, §3.1, what §3.2 says of its
+// roll-against-speed figures, §4.3's describing function), read at run time from the
 // one data file scenarios/reference/mit1976.toml. Every number there carries its
-// unit and its source (table or figure, and page); nothing published is a C++
-// literal. Keys are dotted paths, arrays of tables indexed: "table3[1].max_roll".
+// unit, its source (section, table or figure, car and amplitude) and, optionally, the
+// report's words that print it; nothing published is a C++ literal. Keys are dotted
+// paths, arrays of tables indexed: "table3[1].max_roll".
 #include "mbmodel/DataFiles.h"
 
 #include <cstddef>
@@ -19,8 +20,17 @@ struct PublishedValue {
     double value = 0;
     std::string unit;       ///< as the report prints it: "lb", "kip", "in", "deg", "mph", "Hz", "%"
     std::string qualifier;  ///< the report's own hedge ("up to", "about"), or empty
-    std::string source;     ///< table, figure or section
-    std::string page;       ///< page of the report ("?" while not recorded)
+    std::string source;     ///< section, table or figure, with the car and amplitude
+    std::string page;       ///< page of the report ("?": the OCR text has no page numbers)
+    std::string quote;      ///< the report's words that print it (verbatim from the OCR text), or empty
+};
+
+/// A text quoted from the report ({ text, source, page, quote } in the data file).
+struct PublishedText {
+    std::string text;
+    std::string source;
+    std::string page;
+    std::string quote;  ///< the report's sentence the text is taken from, or empty
 };
 
 class Mit1976 {
@@ -37,6 +47,7 @@ public:
     explicit Mit1976(const std::filesystem::path& file);
 
     bool has(const std::string& key) const { return values_.count(key) > 0; }
+    bool hasText(const std::string& key) const { return texts_.count(key) > 0; }  ///< a quoted text or a label
     /// The published value at `key`; throws unless it exists and is printed in `unit`.
     const PublishedValue& value(const std::string& key, std::string_view unit) const;
     double operator()(const std::string& key, std::string_view unit) const { return value(key, unit).value; }
@@ -47,11 +58,14 @@ public:
 
     const std::filesystem::path& getFile() const { return file_; }
     const std::map<std::string, PublishedValue>& getValues() const { return values_; }
+    /// The texts quoted from the report ({ text, ... } tables; not the file's plain-string labels).
+    const std::map<std::string, PublishedText>& getQuotedTexts() const { return quotedTexts_; }
 
 private:
     std::filesystem::path file_;
     std::map<std::string, PublishedValue> values_;
     std::map<std::string, std::string> texts_;
+    std::map<std::string, PublishedText> quotedTexts_;
     std::map<std::string, size_t> counts_;
 };
 
