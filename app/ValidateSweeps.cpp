@@ -21,6 +21,20 @@ const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {
                                          {"70ton-loaded", 1.0, 10, 22, "11, 17"},  {"70ton-empty", 0.75, 24, 40, "18"},
                                          {"100ton-loaded", 0.75, 8, 18, "21"}, {"100ton-loaded", 1.0, 8, 18, "24"}};
 
+/// "X° at V mph": a sweep's largest value of `value` over its points, with its speed. A
+/// down sweep that never drops and is largest at its lowest speed has no maximum in the
+/// range swept: it "stays on the upper branch to the lowest speed swept".
+std::string describeLargest(const SweepResult& r, SweepDirection direction, double (*value)(const RunSummary&)) {
+    const std::vector<SweepPoint>& l = direction == SweepDirection::Up ? r.up : r.down;
+    const SweepPoint* best = nullptr;
+    for (const auto& p : l)
+        if (!p.failed && (!best || value(p.summary) > value(best->summary))) best = &p;
+    if (!best) return "—";
+    const std::string at = fmt::format("{:.2f}° at {:g} mph", value(best->summary), best->speedMph);
+    const bool neverDrops = direction == SweepDirection::Down && !std::isfinite(r.jumpDownMph);
+    return neverDrops && best == &l.back() ? "stays on the upper branch to the lowest speed swept (" + at + ")" : at;
+}
+
 void findJumps(SweepResult& r) {
     r.jumpUpMph = findSweepJump(r.up, SweepDirection::Up).speedMph;
     r.jumpDownMph = findSweepJump(r.down, SweepDirection::Down).speedMph;
@@ -128,25 +142,11 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
     md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | "
           "largest steady roll, up sweep | largest steady roll, down sweep |\n"
           "|---|---|---|---|---|---|---|---|\n";
+    auto steadyRoll = [](const RunSummary& x) { return x.steadyRollAmplitudeDeg; };
     for (const auto& r : sweeps) {
         writeSweepCsv(s, r);
-        auto largest = [](const std::vector<SweepPoint>& l) {
-            const SweepPoint* best = nullptr;
-            for (const auto& p : l)
-                if (!p.failed && (!best || p.summary.steadyRollAmplitudeDeg > best->summary.steadyRollAmplitudeDeg)) best = &p;
-            return best;
-        };
-        const SweepPoint* up = largest(r.up);
-        const SweepPoint* down = largest(r.down);
-        const std::string upCell = up ? fmt::format("{:.2f}° at {:g} mph", up->summary.steadyRollAmplitudeDeg, up->speedMph) : "—";
-        std::string downCell = "—";
-        if (down) {
-            const bool atLowest = !r.down.empty() && down == &r.down.back();
-            downCell = !std::isfinite(r.jumpDownMph) && atLowest
-                           ? fmt::format("stays on the upper branch to the lowest speed swept ({:.2f}° at {:g} mph)",
-                                         down->summary.steadyRollAmplitudeDeg, down->speedMph)
-                           : fmt::format("{:.2f}° at {:g} mph", down->summary.steadyRollAmplitudeDeg, down->speedMph);
-        }
+        const std::string upCell = describeLargest(r, SweepDirection::Up, steadyRoll);
+        const std::string downCell = describeLargest(r, SweepDirection::Down, steadyRoll);
         const bool band = std::isfinite(r.jumpUpMph) && std::isfinite(r.jumpDownMph) && r.jumpDownMph < r.jumpUpMph;
         md += fmt::format("| {} | {:.2f} | {} | {} | {} | {} | {} | {} |\n", r.c.car, r.c.amplitudeIn, r.model,
                           std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f}", r.jumpUpMph) : "none",
@@ -180,21 +180,20 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
     // largest max roll of the swept runs is given beside the jump speeds.
     md += "\nEach swept case beside what the report's §3.2 says of the figure that holds it. \"Here\" gives each "
           "model's jump speeds (where the steady roll amplitude rises most between neighbouring speeds, up, or falls "
-          "most, down; the band between them is the hysteresis) and the largest max roll of its runs in either sweep, "
-          "the statistic Figure 11 plots.\n\n";
+          "most, down; the band between them is the hysteresis) and, for each sweep on its own, the largest max roll "
+          "of its runs, the statistic Figure 11 plots (a point's whole run, its speed ramp and any jump transient "
+          "included).\n\n";
     for (const auto& c : kSweepCases) {
         const std::string report = formatReportSweepCase(ref, c.car, c.amplitudeIn);
         std::vector<std::string> ours;
         for (const auto& r : sweeps) {
             if (r.c.car != c.car || r.c.amplitudeIn != c.amplitudeIn) continue;
-            double maxRoll = 0;
-            for (const auto* l : {&r.up, &r.down})
-                for (const auto& p : *l)
-                    if (!p.failed) maxRoll = std::max(maxRoll, p.summary.maxRollDeg);
-            ours.push_back(fmt::format("{} up {}, down {}, largest max roll {:.2f}°", r.model,
+            auto maxRoll = [](const RunSummary& x) { return x.maxRollDeg; };
+            ours.push_back(fmt::format("{} jumps up {}, down {}; largest max roll up {}, down {}", r.model,
                                        std::isfinite(r.jumpUpMph) ? fmt::format("{:.1f} mph", r.jumpUpMph) : "none",
                                        std::isfinite(r.jumpDownMph) ? fmt::format("{:.1f} mph", r.jumpDownMph) : "none",
-                                       maxRoll));
+                                       describeLargest(r, SweepDirection::Up, maxRoll),
+                                       describeLargest(r, SweepDirection::Down, maxRoll)));
         }
         md += fmt::format("- **{} {:.2f} in.** {}. Here: {}.\n", c.car, c.amplitudeIn,
                           report.empty() ? fmt::format("Figure {}: mit1976.toml holds nothing of this case", c.figure) : report,

@@ -24,7 +24,7 @@ std::vector<Table3Row> loadTable3(const Mit1976& ref) {
         rows.push_back({ref.text(k + "label"), ref.text(k + "car"), ref(k + "amplitude", "in"), ref(k + "speed", "mph"),
                         {ref(k + "max_roll", "deg"), ref(k + "max_wheel_lift", "in"), ref(k + "max_wheel_load", "lb"),
                          ref(k + "max_side_bearing_load", "lb"), ref(k + "max_center_plate_load", "lb")},
-                        ref.has(k + "branch") ? ref.text(k + "branch") : std::string()});
+                        ref.hasText(k + "branch") ? ref.text(k + "branch") : std::string()});
     }
     return rows;
 }
@@ -49,7 +49,7 @@ std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>&
     std::string md = "## 3. The report's Table 3 (maximum response at selected speeds) beside every model\n\n";
     md += describeStatistics(s) + "\n\n";
     if (!u.describe().empty()) md += u.describe() + "\n\n";
-    if (ref.has("table3_basis.statistic"))
+    if (ref.hasText("table3_basis.statistic"))
         md += fmt::format("What the report's numbers are: {}\n\n", ref.text("table3_basis.statistic"));
     for (const auto& row : table3) {
         const std::vector<BranchRow> rows = collectBranchRows(sweeps, row.car, row.amplitudeIn, row.speedMph, models, fromRest);
