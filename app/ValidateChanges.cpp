@@ -58,11 +58,17 @@ std::string makeChangesSection(const PreviousReport& previousReport, const nlohm
                                   std::abs(pct) > 0.1 ? "**" + change + "**" : change);
             }
         }
-    md += "\nKnown causes of changes in rockroll 0.9.0 (each measured): the Simbody models integrate two energy-audit "
-          "states, which enter CPodes' averaged error norm (measured on the half car: wheel lift −0.9 %, filtered "
-          "loads −0.12 %, max roll +0.005 %; changing only the accuracy by ±6 % moves the same quantities by as much); "
-          "the regime is decided from separation durations (section 1 rows), no longer from one sample; the time "
-          "histories are computed at 500 Hz (previously 100 Hz) and written at 100 Hz.\n\n";
+    md += "\nWhat else changed in how this report is made (the default-case summaries above use the same statistics "
+          "as before): Tables 3 and 4 give one row per model and start (from rest, up sweep, down sweep), every cell "
+          "of a row from one run, in a steady-part table and a whole-run table; before, a swept model's cell took the "
+          "larger of its up- and down-sweep maxima quantity by quantity, and eom and the full car on the 70-ton empty "
+          "and 100-ton cars ran only from rest. Every time-domain model is now swept (section 2). Section 2 gives each "
+          "sweep's largest value per direction, and a down sweep that never drops has no maximum. The criteria "
+          "(section 9) leave out each sweep point's 1 s speed ramp, so a value judged there can only be lower than "
+          "the whole-run value judged before. The describing function's loads come from its twin's time history "
+          "(section 5), no longer from the pointwise peak of its two-harmonic series. The report's numbers are "
+          "traced to the figure or table that prints them (scenarios/reference/mit1976.toml): the jump speeds once "
+          "attributed to Figure 11 at 0.75 in are not in the report, and Figure 11 is the 1.0 in case.\n\n";
     return md;
 }
 

@@ -68,9 +68,9 @@ std::string ResidualUncertainty::describe() const {
         return fmt::format("max roll {:.1f} %, wheel load {:.1f} %, side bearing {:.1f} %, center plate {:.1f} %",
                            100 * x[0], 100 * x[1], 100 * x[2], 100 * x[3]);
     };
-    return fmt::format("**Residual uncertainty of the defaults** (section 7, the largest change over its {} cases, "
+    return fmt::format("**Residual uncertainty of the defaults** (section 7, the largest change over its {} case{}, "
                        "whole-run maxima from rest): contact stiffness {}: {}; integrator accuracy {}: {}.",
-                       cases, stiffnessStep, list(stiffness), accuracyStep, list(accuracy));
+                       cases, cases == 1 ? "" : "s", stiffnessStep, list(stiffness), accuracyStep, list(accuracy));
 }
 
 std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta, ResidualUncertainty& uncertainty) {
