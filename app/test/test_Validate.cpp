@@ -400,3 +400,52 @@ TEST(Validate, CriteriaSectionJudgesEachSweepByItsOwnLimits) {
     EXPECT_NE(md.find("car-b: car_body_vertical_accel ≤ 0.4 g;"), std::string::npos) << md;
     EXPECT_EQ(md.find("car-a:"), std::string::npos) << md;
 }
+
+// Tables 3 and 4: each row is one run (the up sweep's point, the down sweep's point, the
+// run from rest), never the larger of two runs quantity by quantity; a case a model was
+// not swept on says so.
+TEST(Validate, BranchTableTakesEveryCellOfARowFromOneRun) {
+    using namespace rockroll;
+    using namespace rockroll::app;
+    using namespace rockroll::app::validate_detail;
+    auto point = [](double mph, const char* direction, double roll, double sideBearing) {
+        SweepPoint p;
+        p.speedMph = mph;
+        p.direction = direction;
+        p.summary.maxRollDeg = roll;
+        p.summary.maxSideBearingLoadLb = sideBearing;
+        p.summary.steady.rollDeg = roll / 2;
+        p.summary.steady.sideBearingLoadLb = sideBearing / 2;
+        p.summary.regime = "severe";
+        return p;
+    };
+    SweepResult r;
+    r.c = {"car-a", 1.0, 10, 20, ""};
+    r.model = "halfcar";
+    r.up = {point(14.5, "up", 2, 90000), point(15, "up", 3, 80000)};
+    r.down = {point(15.5, "down", 9, 50000), point(15, "down", 8, 60000)};
+    RunSummary rest;
+    rest.model = "halfcar", rest.car = "car-a", rest.amplitudeIn = 1.0, rest.speedMph = 15;
+    rest.maxRollDeg = 1, rest.maxSideBearingLoadLb = 70000, rest.regime = "light";
+    const auto rows = collectBranchRows({r}, "car-a", 1.0, 15, {"halfcar", "eom"}, {rest});
+    ASSERT_EQ(rows.size(), 6u);
+    EXPECT_EQ(rows[0].start, "from rest");
+    EXPECT_EQ(rows[1].start, "up sweep");
+    EXPECT_EQ(rows[2].start, "down sweep");
+    ASSERT_TRUE(rows[1].summary && rows[2].summary && rows[0].summary);
+    EXPECT_EQ(rows[1].summary->maxRollDeg, 3);  // the up sweep's 15 mph point: roll and load from it alone
+    EXPECT_EQ(rows[1].summary->maxSideBearingLoadLb, 80000);
+    EXPECT_EQ(rows[2].summary->maxRollDeg, 8);
+    EXPECT_EQ(rows[2].summary->maxSideBearingLoadLb, 60000);
+    EXPECT_FALSE(rows[4].summary);  // eom: not swept here
+    EXPECT_EQ(rows[4].missing, "not swept on this case");
+    const std::vector<BranchColumn> columns{{"roll, deg", 0, 1, 1}, {"side bearing, lb", 3, 1, 0}};
+    const std::string whole = formatBranchTable(rows, columns, {9, 100000}, false);
+    EXPECT_NE(whole.find("| report | | | | 9 | 100000 |"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("| halfcar | up sweep | 15 | severe | 3.0 (-67 %) | 80000 (-20 %) |"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("| halfcar | down sweep | 15 | severe | 8.0 (-11 %) | 60000 (-40 %) |"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("| halfcar | from rest | 15 | light | 1.0 (-89 %) | 70000 (-30 %) |"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("| eom | up sweep | — | not swept on this case |"), std::string::npos) << whole;
+    const std::string steady = formatBranchTable(rows, columns, {9, 100000}, true);
+    EXPECT_NE(steady.find("| halfcar | down sweep | 15 | severe | 4.0 (-56 %) | 30000 (-70 %) |"), std::string::npos) << steady;
+}
