@@ -61,12 +61,13 @@ std::string makeChangesSection(const PreviousReport& previousReport, const nlohm
     md += "\nWhat else changed in how this report is made (the default-case summaries above use the same statistics "
           "as before): Tables 3 and 4 give one row per model and start (from rest, up sweep, down sweep), every cell "
           "of a row from one run, in a steady-part table and a whole-run table; before, a swept model's cell took the "
-          "larger of its up- and down-sweep maxima quantity by quantity, and eom and the full car on the 70-ton empty "
-          "and 100-ton cars ran only from rest. Every time-domain model is now swept (section 2). Section 2 gives each "
+          "larger of its up- and down-sweep maxima quantity by quantity, and eom ran only from rest. eom is now swept "
+          "on every case (section 2); the full car is swept on the 70-ton loaded car, as before, and runs only from "
+          "rest on the others. Section 2 gives each "
           "sweep's largest value per direction, and a down sweep that never drops has no maximum. The criteria "
           "(section 9) leave out each sweep point's 1 s speed ramp, so a value judged there can only be lower than "
-          "the whole-run value judged before. The describing function's loads come from its twin's time history "
-          "(section 5), no longer from the pointwise peak of its two-harmonic series. The report's numbers are "
+          "the whole-run value judged before. Table 3 no longer shows the describing "
+          "function's loads, which were the pointwise peaks of its two-harmonic series (docs/bespoke.md). The report's numbers are "
           "traced to the figure or table that prints them (scenarios/reference/mit1976.toml): the jump speeds once "
           "attributed to Figure 11 at 0.75 in are not in the report, and Figure 11 is the 1.0 in case.\n\n";
     return md;
