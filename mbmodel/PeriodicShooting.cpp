@@ -3,6 +3,7 @@
 #include "mbmodel/Parallel.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -10,14 +11,17 @@
 
 namespace rockroll {
 
-PeriodicShooting::PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings)
-    : map_(std::move(map)), steps_(std::move(steps)), settings_(settings) {
+PeriodicShooting::PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings, Eigen::VectorXd scales)
+    : map_(std::move(map)), steps_(std::move(steps)), scales_(std::move(scales)), settings_(settings) {
     if (steps_.size() == 0 || (steps_.array() <= 0).any())
         throw std::invalid_argument("shooting: expected a positive perturbation step for every coordinate");
+    if (scales_.size() == 0) scales_ = steps_;
+    if (scales_.size() != steps_.size() || (scales_.array() <= 0).any())
+        throw std::invalid_argument("shooting: expected a positive mismatch scale for every coordinate");
 }
 
 double PeriodicShooting::calcMismatch(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const {
-    return (mapped - x).cwiseQuotient(steps_).cwiseAbs().maxCoeff();
+    return (mapped - x).cwiseQuotient(scales_).cwiseAbs().maxCoeff();
 }
 
 Eigen::MatrixXd PeriodicShooting::calcMonodromy(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const {
@@ -61,6 +65,12 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
     for (;;) {
         out.mismatch = calcMismatch(out.x, out.mapped);
+        if (std::getenv("ROCKROLL_SHOOTING_TRACE")) {
+            Eigen::Index worst = 0;
+            (out.mapped - out.x).cwiseQuotient(scales_).cwiseAbs().maxCoeff(&worst);
+            fmt::print(stderr, "shooting: step {} mismatch {:.4g} (coordinate {}), |mu|max {:.4g}\n", out.iterations,
+                       out.mismatch, worst, std::abs(calcMultipliers(out.monodromy)[0]));
+        }
         if (out.mismatch < settings_.tolerance) {
             out.converged = true;
             break;

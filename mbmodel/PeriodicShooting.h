@@ -12,8 +12,8 @@
 // The Newton step solves (M − I)·δ = −F in least squares (complete orthogonal
 // decomposition): a friction wedge that sticks all period long is neutral (μ = 1,
 // M − I singular up to finite-difference noise), so orbits come in a family along
-// that direction and the step leaves it where it is. Mismatch: max_i |F_i| / h_i,
-// in units of the perturbation steps; converged below `tolerance`. A step is
+// that direction and the step leaves it where it is. Mismatch: max_i |F_i| / s_i,
+// s_i the perturbation steps unless other scales are given; converged below `tolerance`. A step is
 // capped at `maxStep` perturbation steps; a step whose mismatch grows past 10×
 // the current one, or whose map fails, ends the search. The Floquet multipliers
 // are the eigenvalues of M at the last iterate (a sticking wedge contributes one
@@ -48,8 +48,9 @@ public:
     /// The map P; it may throw (a failed integration), which ends the search.
     using Map = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
-    /// steps: h_i > 0, one per coordinate.
-    PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings = {});
+    /// steps: h_i > 0, one per coordinate; scales: s_i > 0 the mismatch is measured in,
+    /// max_i |F_i| / s_i (empty: the steps).
+    PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings = {}, Eigen::VectorXd scales = {});
 
     ShootingResult solve(const Eigen::VectorXd& guess) const;
     /// M at x, given P(x).
@@ -61,7 +62,7 @@ public:
 
 private:
     Map map_;
-    Eigen::VectorXd steps_;
+    Eigen::VectorXd steps_, scales_;
     ShootingSettings settings_;
 };
 

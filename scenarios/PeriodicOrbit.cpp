@@ -41,13 +41,15 @@ PeriodicOrbitSolver::PeriodicOrbitSolver(Scenario base, double startDistance, Or
                                         "discrete truck mode); expected a model with a continuous state",
                                         base_.model));
     stateSize_ = kinds.size();
-    std::vector<double> steps;
+    std::vector<double> steps, scales;
     for (size_t i = 0; i < kinds.size(); ++i) {
         if (kinds[i] == StateKind::Accumulating) continue;
         shot_.push_back(int(i));
         steps.push_back(kinds[i] == StateKind::Position ? 1e-5 : kinds[i] == StateKind::Rate ? 1e-4 : 1e-7);
+        scales.push_back(kinds[i] == StateKind::Internal ? 1e-6 : steps.back());
     }
     steps_ = Eigen::Map<const Eigen::VectorXd>(steps.data(), Eigen::Index(steps.size()));
+    scales_ = Eigen::Map<const Eigen::VectorXd>(scales.data(), Eigen::Index(scales.size()));
     // The static state's history row, for the summaries' static loads (the orbit's first row is not static).
     Scenario rest = base_;
     rest.run.duration = 0.05;
@@ -112,11 +114,11 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
         };
     };
     const Eigen::VectorXd x0 = toShooting(guess);
-    ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting).solve(x0);
+    ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting, scales_).solve(x0);
     o.mapEvaluations = r.mapEvaluations;
     int period = 1;
     if (!r.converged && settings_.tryPeriodTwo) {
-        ShootingResult r2 = PeriodicShooting(mapOf(2), steps_, settings_.shooting).solve(x0);
+        ShootingResult r2 = PeriodicShooting(mapOf(2), steps_, settings_.shooting, scales_).solve(x0);
         o.mapEvaluations += r2.mapEvaluations;
         if (r2.converged) {
             r = std::move(r2);
@@ -136,7 +138,7 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
         if (period == 2) {
             const Eigen::VectorXd once = toShooting(runPeriods(speedMph, o.y, 1).restart.y);
             ++o.mapEvaluations;
-            o.periodOneMismatch = (once - r.x).cwiseQuotient(steps_).cwiseAbs().maxCoeff();
+            o.periodOneMismatch = (once - r.x).cwiseQuotient(scales_).cwiseAbs().maxCoeff();
             if (o.periodOneMismatch < settings_.shooting.tolerance) period = 1;
         } else {
             o.periodOneMismatch = o.mismatch;

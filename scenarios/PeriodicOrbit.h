@@ -13,7 +13,10 @@
 // y without the entries that grow without bound (StateKind::Accumulating: the
 // energy audit's integrals); the friction bristles are included. Steps h_i:
 // positions 10 µm (or 10 µrad), rates 0.1 mm/s, bristles 0.1 µm, as the
-// describing function's twin check. Newton (mbmodel/PeriodicShooting.h) runs on
+// describing function's twin check. The mismatch is measured in the same units
+// except for the bristles, in 1 µm (0.4 % of the wedges' bristle limit): a wedge
+// that sticks creeps by a few µm a period, the neutral direction Newton leaves
+// alone. Newton (mbmodel/PeriodicShooting.h) runs on
 // P(x) − x; when it fails it runs on P∘P, and an orbit fixed by P∘P but not by P
 // is a period-2 response. Floquet multipliers: the eigenvalues of ∂(P^k)/∂x at the
 // orbit (k = 1 or 2).
@@ -93,7 +96,7 @@ private:
     OrbitSettings settings_;
     std::vector<int> shot_;            ///< indices of y in x
     size_t stateSize_ = 0;
-    Eigen::VectorXd steps_;
+    Eigen::VectorXd steps_, scales_;
     std::vector<double> staticReference_;  ///< the static state's history row (static loads of the summary)
 };
 
