@@ -106,6 +106,10 @@ int orbitsCommand(const OrbitsOptions& o) {
         throw ScenarioError("--from-mph and --to-mph are equal: expected a speed range to continue over");
     const double trackPeriod = PeriodicOrbitSolver::calcTrackPeriod(sc0);  // ScenarioError when the track does not repeat
     (void)trackPeriod;
+    OrbitSettings settings;
+    settings.accuracy = o.accuracy;
+    settings.shooting.threads = o.jobs;
+    { const PeriodicOrbitSolver check(sc0, 0.0, settings); }  // ScenarioError: a model whose state cannot be shot
     std::optional<OutputDirectory> dir;
     if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
 
@@ -121,9 +125,6 @@ int orbitsCommand(const OrbitsOptions& o) {
                                              startRun.result.stop->regime, startRun.result.stop->time));
     const double startWall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
-    OrbitSettings settings;
-    settings.accuracy = o.accuracy;
-    settings.shooting.threads = o.jobs;
     const PeriodicOrbitSolver solver(sc0, startRun.restart.distance, settings);
     OrbitContinuationSettings cs;
     cs.fromMph = o.fromMph;
