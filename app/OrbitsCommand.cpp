@@ -142,8 +142,10 @@ int orbitsCommand(const OrbitsOptions& o) {
     });
     if (branch.stopReason == "no orbit at the start speed")
         throw std::runtime_error(fmt::format("no periodic orbit at --from-mph {:g} from the end of a {:g} s run from "
-                                             "rest: {} (a longer --start-duration-s, or another start speed)",
-                                             o.fromMph, o.startDurationS, branch.points.front().failure));
+                                             "rest ({} rocking, steady roll amplitude {:.3f} deg): {} (a longer "
+                                             "--start-duration-s, or another start speed)",
+                                             o.fromMph, o.startDurationS, startRun.summary.regime,
+                                             startRun.summary.steadyRollAmplitudeDeg, branch.points.front().failure));
 
     json j;
     j["command"] = "orbits";
@@ -156,6 +158,8 @@ int orbitsCommand(const OrbitsOptions& o) {
     j["start"] = {{"speed_mph", o.fromMph},
                   {"duration_s", o.startDurationS},
                   {"distance_m", startRun.restart.distance},
+                  {"steady_roll_amplitude_deg", startRun.summary.steadyRollAmplitudeDeg},
+                  {"regime", startRun.summary.regime},
                   {"wall_time_s", startWall}};
     j["stop_reason"] = branch.stopReason;
     j["end_bracket_mph"] = branch.endBracketMph
