@@ -75,7 +75,7 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
                 continue;
             }
             b.endBracketMph = std::make_pair(cur.speedMph, o.speedMph);
-            const bool fold = cur.largestRealMultiplier > settings_.foldMultiplier;
+            const bool fold = cur.largestRealMultiplier > settings_.foldMultiplier && cur.largestRealMultiplier < 2 - settings_.foldMultiplier;
             OrbitEvent e;
             e.kind = fold ? "fold" : "branch end";
             e.fromMph = cur.speedMph;

@@ -10,7 +10,7 @@
 // branch: the predictor overshot the end of this one), ΔV is halved up to
 // `refinements` times; then the branch ends there and the speeds bracket its end.
 // A branch that ends so with the largest real multiplier of its last orbit near +1
-// (above `foldMultiplier`) ends at a fold (a saddle-node of periodic orbits: a real
+// (within 1 ± (1 − `foldMultiplier`)) ends at a fold (a saddle-node of periodic orbits: a real
 // multiplier reaches +1 there). Between neighbouring orbits it records a real
 // multiplier crossing −1 (period doubling), a complex pair leaving the unit circle
 // (Neimark–Sacker), and a real multiplier crossing +1, each as the speed bracket
@@ -28,7 +28,7 @@ struct OrbitContinuationSettings {
     double fromMph = 16, toMph = 10, stepMph = 0.25;
     int refinements = 2;          ///< halvings of the step at a failure before the branch ends
     double jumpFraction = 0.3;    ///< |Δ roll amplitude| / roll amplitude above which an orbit is another branch's
-    double foldMultiplier = 0.8;  ///< largest real multiplier of the last orbit above which the end is a fold
+    double foldMultiplier = 0.8;  ///< the end is a fold when the last orbit's largest real multiplier is in (this, 2 − this)
 };
 
 struct OrbitEvent {
