@@ -1,5 +1,6 @@
 // rockroll: freight-car rock-and-roll simulator (command line).
 #include "app/Commands.h"
+#include "app/OrbitsCommand.h"
 #include "app/Output.h"
 #include "app/PlotCommand.h"
 #include "app/Provenance.h"
@@ -189,6 +190,35 @@ int main(int argc, char** argv) {
                             "criteria: minimum single-wheel load over static")
         ->capture_default_str()->check(inRange(wheelLoadLimitRange, ""));
 
+    app::OrbitsOptions orbits;
+    CLI::App* orbitsCmd = cli.add_subcommand(
+        "orbits", "periodic orbits of a time-domain model by shooting, continued in speed, with Floquet multipliers "
+                  "(docs/orbits.md)");
+    orbitsCmd->add_option("scenario", orbits.scenario, "scenario file (TOML)")->required()->check(CLI::ExistingFile);
+    orbitsCmd->add_option("--model", orbits.model, fmt::format("{} (overrides the scenario's)", fmt::join(modelNames, " | ")))
+        ->check(oneOf(modelNames));
+    orbitsCmd->add_option("--amplitude-in", orbits.amplitudeIn, "cross-level amplitude A [in]")
+        ->check(inRange("track.amplitude", "in"));
+    orbitsCmd->add_option("--from-mph", orbits.fromMph, "start speed [mph]")->required()->check(inRange("run.speed", "mph"));
+    orbitsCmd->add_option("--to-mph", orbits.toMph, "speed the continuation stops at [mph]")
+        ->required()
+        ->check(inRange("run.speed", "mph"));
+    orbitsCmd->add_option("--step-mph", orbits.stepMph, "speed step [mph]")->capture_default_str()->check(inRange(stepRange, "mph"));
+    orbitsCmd->add_option("--start-duration-s", orbits.startDurationS,
+                          "the run from rest at --from-mph whose end the first shooting starts from [s]")
+        ->capture_default_str()
+        ->check(inRange("run.duration", "s"));
+    orbitsCmd->add_option("--accuracy", orbits.accuracy, "integrator accuracy of the one-period map")
+        ->capture_default_str()
+        ->check(CLI::Range(1e-12, 1e-3));
+    orbitsCmd->add_option("--refinements", orbits.refinements, "step halvings at a failure before the branch ends")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 8));
+    orbitsCmd->add_option("--jobs", orbits.jobs, "threads for the monodromy's columns (default: one per core)")
+        ->check(inRange(jobsRange, ""));
+    orbitsCmd->add_flag("--json", orbits.json, "print exactly one JSON object on stdout");
+    addCommonOptions(orbitsCmd, orbits, "write orbits.csv and orbits.json into this directory");
+
     app::PlotOptions plot;
     CLI::App* plotCmd = cli.add_subcommand(
         "plot", "plot a run, sweep, steady, modes or study output directory into DIR/plots/ (PNG and SVG, matplotlib "
@@ -223,6 +253,7 @@ int main(int argc, char** argv) {
         if (plotCmd->parsed()) return app::plotCommand(plot);
         if (studyCmd->parsed()) return app::studyCommand(study);
         if (mergeCmd->parsed()) return app::mergeCommand(merge);
+        if (orbitsCmd->parsed()) return app::orbitsCommand(orbits);
         return app::runDefaultCase();
     } catch (const ScenarioError& e) {
         fmt::print(stderr, "rockroll: scenario error: {}\n", e.what());

@@ -39,6 +39,9 @@ public:
     void reset(State& s) const {
         for (int i = 0; i < kNumZ; ++i) forces_.updZ(s)[z0_ + i] = 0;
     }
+    void mark(State& s) const {
+        for (int i = 0; i < kNumZ; ++i) forces_.updZ(s)[z0_ + i] = 1;
+    }
 
 private:
     const GeneralForceSubsystem& forces_;
@@ -162,6 +165,17 @@ void RockingModel::calcChannels(const State& s, std::vector<double>& out) const 
 RockingModel::EnergyAccounts RockingModel::getEnergyAccounts(const State& s) const { return energyMeter_->get(s); }
 
 void RockingModel::resetEnergyAccounts(State& s) const { energyMeter_->reset(s); }
+
+std::vector<int> RockingModel::getEnergyAuditYIndices() const {
+    // Marks the meter's z entries and finds them in Y (z follows q and u there).
+    State s = system_.getDefaultState();
+    for (int i = 0; i < s.getNY(); ++i) s.updY()[i] = 0;
+    energyMeter_->mark(s);
+    std::vector<int> out;
+    for (int i = 0; i < s.getNY(); ++i)
+        if (s.getY()[i] != 0) out.push_back(i);
+    return out;
+}
 
 TruckPowers RockingModel::calcPowers(const State& s) const {
     TruckPowers sum;

@@ -55,6 +55,8 @@ public:
     /// Zeroes the accumulated energies: a run continued from another run's final
     /// state counts its energies from its own start.
     void resetEnergyAccounts(SimTK::State& s) const;
+    /// Where the energy audit's integrals sit in the flat state Y = [q, u, z].
+    std::vector<int> getEnergyAuditYIndices() const;
     /// Sum of every truck's element powers [W].
     TruckPowers calcPowers(const SimTK::State& s) const;
 

@@ -23,6 +23,16 @@ struct RestartState {
     double speed = 0;       ///< speed at the end [m/s]
 };
 
+/// What an entry of a model's flat state y is, for shooting a periodic orbit
+/// (scenarios/PeriodicOrbit.h perturbs each entry by its kind's step and leaves the
+/// accumulating ones out of the orbit).
+enum class StateKind {
+    Position,     ///< a generalized coordinate [m, rad] (quaternion entries included)
+    Rate,         ///< a generalized speed [m/s, rad/s]
+    Internal,     ///< an element's internal state: a friction bristle's deflection [m, rad]
+    Accumulating  ///< grows without bound over a run (the energy audit's integrals)
+};
+
 class TimeDomainModel {
 public:
     virtual ~TimeDomainModel() = default;
@@ -37,6 +47,11 @@ public:
     /// Runs sc.run (duration, output rate, integrator, limits resolved against the
     /// car) from static equilibrium (y0 empty) or from y0. Throws NumericalFailure.
     virtual RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const = 0;
+
+    /// The kind of every entry of the flat state, in its order; empty when the
+    /// state cannot be shot for a periodic orbit (the default; the reduced model's
+    /// state holds its truck's discrete mode).
+    virtual std::vector<StateKind> getStateKinds() const { return {}; }
 };
 
 }  // namespace rockroll

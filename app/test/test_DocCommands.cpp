@@ -136,7 +136,7 @@ CliOutcome runDocCommand(const fs::path& dir, const std::string& args, bool pars
     return rockroll::test::runRockroll(dir, args, parseOnly ? "ROCKROLL_PARSE_ONLY=1" : "");
 }
 
-const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot", "study", "merge"};
+const std::vector<std::string> kSubcommands{"run", "steady", "sweep", "modes", "validate", "plot", "study", "merge", "orbits"};
 
 bool has(const std::vector<std::string>& t, const std::string& w) { return std::find(t.begin(), t.end(), w) != t.end(); }
 

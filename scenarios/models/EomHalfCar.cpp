@@ -27,6 +27,14 @@ public:
         return simulateEom(model_, settings, Eigen::Map<const EomHalfCarModel::State>(y0.data()));
     }
 
+    /// [q (9), q̇ (9), w (4)]: the energy audit's integrals are quadratures outside the state.
+    std::vector<StateKind> getStateKinds() const override {
+        using M = EomHalfCarModel;
+        std::vector<StateKind> kinds(M::kNumStates, StateKind::Internal);
+        for (int i = 0; i < 2 * M::kNumDofs; ++i) kinds[i] = i < M::kNumDofs ? StateKind::Position : StateKind::Rate;
+        return kinds;
+    }
+
 private:
     EomHalfCarModel model_;
 };

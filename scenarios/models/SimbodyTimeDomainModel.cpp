@@ -19,6 +19,15 @@ RunResult SimbodyTimeDomainModel::simulate(const Scenario& sc, const std::vector
     return rockroll::simulate(*model_, settings, y0);
 }
 
+std::vector<StateKind> SimbodyTimeDomainModel::getStateKinds() const {
+    const SimTK::State s = model_->makeStaticState(false);
+    const int nq = s.getNQ(), nu = s.getNU();
+    std::vector<StateKind> kinds(s.getNY(), StateKind::Internal);
+    for (int i = 0; i < nq + nu; ++i) kinds[i] = i < nq ? StateKind::Position : StateKind::Rate;
+    for (int i : model_->getEnergyAuditYIndices()) kinds[i] = StateKind::Accumulating;
+    return kinds;
+}
+
 ModelOptions makeModelOptions(const Scenario& sc, const TrackMotion& motion) {
     return ModelOptions{sc.speed, sc.entry, motion, sc.attribution};
 }

@@ -14,6 +14,8 @@ public:
     const ChannelLayout& getChannels() const override { return model_->getChannels(); }
     std::vector<double> calcStaticState() const override;
     RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const override;
+    /// Simbody's Y = [q, u, z]: z holds the friction bristles and the energy audit's two integrals.
+    std::vector<StateKind> getStateKinds() const override;
     const RockingModel& getRockingModel() const { return *model_; }
 
 private:

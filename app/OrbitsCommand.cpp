@@ -1,0 +1,212 @@
+#include "app/OrbitsCommand.h"
+
+#include "app/Output.h"
+#include "app/Provenance.h"
+#include "mbmodel/Parallel.h"
+#include "mbmodel/Units.h"
+#include "scenarios/ModelRegistry.h"
+#include "scenarios/OrbitContinuation.h"
+#include "scenarios/ScenarioRun.h"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace rockroll::app {
+
+namespace {
+using json = nlohmann::ordered_json;
+
+json numberOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+Scenario loadOrbitScenario(const OrbitsOptions& o) {
+    std::vector<ScenarioOverride> overrides;
+    for (const std::string& text : o.sets) {
+        try {
+            overrides.push_back(parseScenarioOverride(text));
+        } catch (const ScenarioError&) {
+            throw ScenarioError(fmt::format("--set \"{}\": expected KEY=VALUE with a scenario key", text));
+        }
+    }
+    Scenario sc = loadScenarioFile(o.scenario, overrides);
+    for (const ScenarioOverride& ov : overrides) {
+        if (o.model && ov.key == "run.model")
+            throw ScenarioError("--model and --set run.model both set 'run.model': expected one of them");
+        if (o.amplitudeIn && ov.key == "track.amplitude")
+            throw ScenarioError("--amplitude-in and --set track.amplitude both set 'track.amplitude': expected one of them");
+    }
+    if (o.amplitudeIn && !sc.track.measured.empty())
+        throw ScenarioError(fmt::format("--amplitude-in: {} has a measured track, which has no rectified-sine "
+                                        "amplitude; expected no --amplitude-in",
+                                        sc.source));
+    if (o.model) sc.model = *o.model;
+    if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
+    return sc;
+}
+
+json makePointJson(const PeriodicOrbit& p) {
+    json j;
+    j["speed_mph"] = p.speedMph;
+    j["converged"] = p.converged;
+    j["period"] = p.converged ? json(p.period) : json(nullptr);
+    j["mismatch_steps"] = numberOrNull(p.mismatch);
+    j["newton_steps"] = p.iterations;
+    j["map_evaluations"] = p.mapEvaluations;
+    j["wall_time_s"] = p.wallTimeS;
+    if (!p.converged) {
+        j["failure"] = p.failure;
+        return j;
+    }
+    const RunSummary& s = p.run.summary;
+    j["roll_amplitude_deg"] = p.rollAmplitudeDeg;
+    j["wheel_lift_fraction"] = p.wheelLiftFraction;
+    j["max_roll_deg"] = s.maxRollDeg;
+    j["max_wheel_lift_in"] = s.maxWheelLiftIn;
+    j["max_wheel_load_lb"] = s.maxWheelLoadLb;
+    j["min_wheel_load_ratio"] = s.minWheelLoadRatio;
+    j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
+    j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
+    j["regime"] = s.regime;
+    j["max_multiplier"] = p.maxMultiplier;
+    j["largest_real_multiplier"] = numberOrNull(p.largestRealMultiplier);
+    j["smallest_real_multiplier"] = numberOrNull(p.smallestRealMultiplier);
+    j["stable"] = p.stable;
+    json mu = json::array();
+    for (Eigen::Index i = 0; i < p.multipliers.size() && i < 8; ++i)
+        mu.push_back({{"re", p.multipliers[i].real()}, {"im", p.multipliers[i].imag()}, {"abs", std::abs(p.multipliers[i])}});
+    j["multipliers"] = mu;  // the 8 largest by modulus
+    return j;
+}
+
+/// One flat record per point, for orbits.csv.
+json makeRecord(const json& p) {
+    json r;
+    r["speed_mph"] = p["speed_mph"];
+    r["branch"] = 1;
+    r["converged"] = p["converged"];
+    r["period"] = p["period"];
+    for (const char* k : {"roll_amplitude_deg", "wheel_lift_fraction", "max_roll_deg", "max_wheel_lift_in",
+                          "max_wheel_load_lb", "min_wheel_load_ratio", "max_side_bearing_load_lb",
+                          "max_center_plate_load_lb", "max_multiplier", "largest_real_multiplier",
+                          "smallest_real_multiplier"})
+        r[k] = p.contains(k) ? p[k] : json(nullptr);
+    r["stable"] = p.contains("stable") ? json(p["stable"].get<bool>() ? "yes" : "no") : json(nullptr);
+    r["mismatch_steps"] = p["mismatch_steps"];
+    r["newton_steps"] = p["newton_steps"];
+    r["wall_time_s"] = p["wall_time_s"];
+    return r;
+}
+}  // namespace
+
+int orbitsCommand(const OrbitsOptions& o) {
+    const Scenario sc0 = loadOrbitScenario(o);
+    if (o.fromMph == o.toMph)
+        throw ScenarioError("--from-mph and --to-mph are equal: expected a speed range to continue over");
+    const double trackPeriod = PeriodicOrbitSolver::calcTrackPeriod(sc0);  // ScenarioError when the track does not repeat
+    (void)trackPeriod;
+    OrbitSettings settings;
+    settings.accuracy = o.accuracy;
+    settings.shooting.threads = o.jobs;
+    { const PeriodicOrbitSolver check(sc0, 0.0, settings); }  // ScenarioError: a model whose state cannot be shot
+    std::optional<OutputDirectory> dir;
+    if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
+
+    // The start: a run from rest at --from-mph, at the orbit's accuracy.
+    Scenario start = sc0;
+    start.speed = o.fromMph * units::mph;
+    start.run.duration = o.startDurationS;
+    start.run.integrator.accuracy = o.accuracy;
+    const auto wall0 = std::chrono::steady_clock::now();
+    const ScenarioRun startRun = runScenario(start);
+    if (startRun.result.stop)
+        throw std::runtime_error(fmt::format("the start run at {:g} mph stopped: the car {} at t = {:.3f} s", o.fromMph,
+                                             startRun.result.stop->regime, startRun.result.stop->time));
+    const double startWall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+
+    const PeriodicOrbitSolver solver(sc0, startRun.restart.distance, settings);
+    OrbitContinuationSettings cs;
+    cs.fromMph = o.fromMph;
+    cs.toMph = o.toMph;
+    cs.stepMph = o.stepMph;
+    cs.refinements = o.refinements;
+    const OrbitContinuation continuation(solver, cs);
+    const OrbitBranch branch = continuation.trace(startRun.restart.y, [&](const PeriodicOrbit& p) {
+        if (!o.json)
+            fmt::print(stderr, "orbits: {:.4g} mph {} ({:.1f} s)\n", p.speedMph,
+                       p.converged ? fmt::format("period {}, roll {:.3f} deg, |mu|max {:.4f}", p.period,
+                                                 p.rollAmplitudeDeg, p.maxMultiplier)
+                                   : "no orbit: " + p.failure,
+                       p.wallTimeS);
+    });
+    if (branch.stopReason == "no orbit at the start speed")
+        throw std::runtime_error(fmt::format("no periodic orbit at --from-mph {:g} from the end of a {:g} s run from "
+                                             "rest ({} rocking, steady roll amplitude {:.3f} deg): {} (a longer "
+                                             "--start-duration-s, or another start speed)",
+                                             o.fromMph, o.startDurationS, startRun.summary.regime,
+                                             startRun.summary.steadyRollAmplitudeDeg, branch.points.front().failure));
+
+    json j;
+    j["command"] = "orbits";
+    j["model"] = sc0.model;
+    j["car"] = sc0.car.name;
+    j["amplitude_in"] = sc0.track.measured.empty() ? json(sc0.track.amplitude / units::inch) : json(nullptr);
+    j["method"] = "shooting on the one-period map P(y) = phi_T(y), T = L/V, Newton with a finite-difference "
+                  "monodromy; natural-parameter continuation in speed with a secant predictor (docs/orbits.md)";
+    j["accuracy"] = o.accuracy;
+    j["start"] = {{"speed_mph", o.fromMph},
+                  {"duration_s", o.startDurationS},
+                  {"distance_m", startRun.restart.distance},
+                  {"steady_roll_amplitude_deg", startRun.summary.steadyRollAmplitudeDeg},
+                  {"regime", startRun.summary.regime},
+                  {"wall_time_s", startWall}};
+    j["stop_reason"] = branch.stopReason;
+    j["end_bracket_mph"] = branch.endBracketMph
+                               ? json::array({branch.endBracketMph->first, branch.endBracketMph->second})
+                               : json(nullptr);
+    json events = json::array();
+    for (const auto& e : branch.events)
+        events.push_back({{"kind", e.kind}, {"from_mph", e.fromMph}, {"to_mph", e.toMph}, {"detail", e.detail}});
+    j["events"] = events;
+    json points = json::array(), records = json::array();
+    for (const auto& p : branch.points) {
+        points.push_back(makePointJson(p));
+        records.push_back(makeRecord(points.back()));
+    }
+    j["points"] = points;
+    j["provenance"] = makeProvenance(sc0, getCommandLine());
+    if (dir) {
+        dir->write("orbits.csv", [&](std::ostream& out) { writeRecordsCsv(out, records); });
+        dir->writeJson("orbits.json", j);
+        dir->commit();
+    }
+    if (o.json) {
+        fmt::print("{}\n", j.dump());
+        return kExitOk;
+    }
+    fmt::print("rockroll orbits — {} model, {} car, {}, from {:g} to {:g} mph\n", sc0.model, sc0.car.name,
+               sc0.track.measured.empty() ? fmt::format("{:.2f} in", sc0.track.amplitude / units::inch)
+                                          : std::string("measured track"),
+               o.fromMph, o.toMph);
+    fmt::print("{:>10}{:>8}{:>11}{:>11}{:>11}{:>10}{:>10}{:>8}\n", "speed mph", "period", "roll deg", "lift frac",
+               "|mu|max", "mu real+", "mu real-", "stable");
+    for (const auto& p : branch.points) {
+        if (!p.converged) {
+            fmt::print("{:>10.4g}  no orbit: {}\n", p.speedMph, p.failure);
+            continue;
+        }
+        fmt::print("{:>10.4g}{:>8}{:>11.3f}{:>11.3f}{:>11.4f}{:>10.4f}{:>10.4f}{:>8}\n", p.speedMph, p.period,
+                   p.rollAmplitudeDeg, p.wheelLiftFraction, p.maxMultiplier, p.largestRealMultiplier,
+                   p.smallestRealMultiplier, p.stable ? "yes" : "no");
+    }
+    for (const auto& e : branch.events)
+        fmt::print("  {} between {:g} and {:g} mph: {}\n", e.kind, e.fromMph, e.toMph, e.detail);
+    fmt::print("stopped: {}\n", branch.stopReason);
+    if (dir)
+        fmt::print("wrote {} and {}\n", dir->getFinalPath("orbits.csv").string(),
+                   dir->getFinalPath("orbits.json").string());
+    return kExitOk;
+}
+
+}  // namespace rockroll::app

@@ -1,0 +1,63 @@
+// rockroll orbits --out DIR: orbits.csv and orbits.json written and read back; bad input refused.
+#include "tests/CliRunner.h"
+#include "tests/CsvReader.h"
+#include "tests/TestTmp.h"
+#include "tests/TextFile.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+using namespace rockroll::test;
+
+namespace {
+const std::string kScenario = std::string("'") + ROCKROLL_SOURCE_DIR + "/scenarios/70ton-loaded.toml'";
+}
+
+TEST(OrbitsCommand, WritesCsvAndJsonThatReadBack) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario +
+                                              " --model eom --amplitude-in 0.25 --from-mph 12 --to-mph 11.75 "
+                                              "--step-mph 0.25 --start-duration-s 20 --refinements 0 --out out");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(readTextFile(dir / "out" / "orbits.json"));
+    EXPECT_EQ(j.at("model"), "eom");
+    EXPECT_TRUE(j.contains("provenance"));
+    const auto& points = j.at("points");
+    ASSERT_GE(points.size(), 2u);
+    const CsvTable csv = parseCsvTable(readTextFile(dir / "out" / "orbits.csv"));
+    ASSERT_EQ(csv.rows.size(), points.size());
+    for (const char* c : {"speed_mph", "branch", "converged", "period", "roll_amplitude_deg", "wheel_lift_fraction",
+                          "max_wheel_load_lb", "max_side_bearing_load_lb", "max_center_plate_load_lb",
+                          "max_multiplier", "stable"})
+        EXPECT_GE(csv.find(c), 0) << c;
+    const auto speed = csv.numbers("speed_mph");
+    for (size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(speed[i], points[i].at("speed_mph").get<double>());
+        const std::string conv = csv.rows[i][size_t(csv.find("converged"))];
+        EXPECT_EQ(conv, points[i].at("converged").get<bool>() ? "true" : "false");
+        if (points[i].at("converged").get<bool>()) {
+            EXPECT_EQ(*parseNumber(csv.rows[i][size_t(csv.find("roll_amplitude_deg"))]),
+                      points[i].at("roll_amplitude_deg").get<double>());
+            EXPECT_EQ(csv.rows[i][size_t(csv.find("stable"))], points[i].at("stable").get<bool>() ? "yes" : "no");
+        } else {
+            EXPECT_EQ(csv.rows[i][size_t(csv.find("roll_amplitude_deg"))], "");  // never reported as an orbit
+        }
+    }
+    EXPECT_TRUE(points[0].at("converged").get<bool>());
+}
+
+TEST(OrbitsCommand, RefusesATrackThatDoesNotRepeat) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario +
+                                              " --model eom --from-mph 12 --to-mph 11 --set track.rails=4");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("rails"), std::string::npos) << r.err;
+}
+
+TEST(OrbitsCommand, RefusesTheReducedModel) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario + " --model reduced --from-mph 12 --to-mph 11");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+}

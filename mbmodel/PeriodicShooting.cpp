@@ -1,0 +1,117 @@
+#include "mbmodel/PeriodicShooting.h"
+
+#include "mbmodel/Parallel.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <exception>
+#include <fmt/format.h>
+#include <stdexcept>
+#include <vector>
+
+namespace rockroll {
+
+PeriodicShooting::PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings, Eigen::VectorXd scales)
+    : map_(std::move(map)), steps_(std::move(steps)), scales_(std::move(scales)), settings_(settings) {
+    if (steps_.size() == 0 || (steps_.array() <= 0).any())
+        throw std::invalid_argument("shooting: expected a positive perturbation step for every coordinate");
+    if (scales_.size() == 0) scales_ = steps_;
+    if (scales_.size() != steps_.size() || (scales_.array() <= 0).any())
+        throw std::invalid_argument("shooting: expected a positive mismatch scale for every coordinate");
+}
+
+double PeriodicShooting::calcMismatch(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const {
+    return (mapped - x).cwiseQuotient(scales_).cwiseAbs().maxCoeff();
+}
+
+Eigen::MatrixXd PeriodicShooting::calcMonodromy(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const {
+    const Eigen::Index n = x.size();
+    Eigen::MatrixXd M(n, n);
+    parallelFor(size_t(n), settings_.threads, [&](size_t i) {
+        Eigen::VectorXd xp = x;
+        xp[Eigen::Index(i)] += steps_[Eigen::Index(i)];
+        M.col(Eigen::Index(i)) = (map_(xp) - mapped) / steps_[Eigen::Index(i)];
+    });
+    return M;
+}
+
+Eigen::VectorXcd PeriodicShooting::calcMultipliers(const Eigen::MatrixXd& monodromy) {
+    const Eigen::VectorXcd mu = monodromy.eigenvalues();
+    std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
+    std::sort(v.begin(), v.end(), [](const std::complex<double>& a, const std::complex<double>& b) {
+        if (std::abs(a) != std::abs(b)) return std::abs(a) > std::abs(b);
+        if (a.real() != b.real()) return a.real() > b.real();
+        return a.imag() > b.imag();
+    });
+    return Eigen::Map<const Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
+}
+
+ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
+    const Eigen::Index n = guess.size();
+    if (n != steps_.size())
+        throw std::invalid_argument(fmt::format("shooting: guess has {} coordinates; expected {}", n, steps_.size()));
+    ShootingResult out;
+    out.x = guess;
+    try {
+        out.mapped = map_(out.x);
+        ++out.mapEvaluations;
+        out.monodromy = calcMonodromy(out.x, out.mapped);
+        out.mapEvaluations += int(n);
+    } catch (const std::exception& e) {
+        out.failure = fmt::format("the map failed at the start: {}", e.what());
+        out.mismatch = std::numeric_limits<double>::infinity();
+        return out;
+    }
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+    for (;;) {
+        out.mismatch = calcMismatch(out.x, out.mapped);
+        if (std::getenv("ROCKROLL_SHOOTING_TRACE")) {
+            Eigen::Index worst = 0;
+            (out.mapped - out.x).cwiseQuotient(scales_).cwiseAbs().maxCoeff(&worst);
+            fmt::print(stderr, "shooting: step {} mismatch {:.4g} (coordinate {}), |mu|max {:.4g}\n", out.iterations,
+                       out.mismatch, worst, std::abs(calcMultipliers(out.monodromy)[0]));
+        }
+        if (out.mismatch < settings_.tolerance) {
+            out.converged = true;
+            break;
+        }
+        if (out.iterations >= settings_.maxIterations) {
+            out.failure = fmt::format("no convergence in {} Newton steps (mismatch {:.3g} perturbation steps)",
+                                      settings_.maxIterations, out.mismatch);
+            break;
+        }
+        Eigen::VectorXd delta = (out.monodromy - I).completeOrthogonalDecomposition().solve(out.x - out.mapped);
+        const double size = delta.cwiseQuotient(steps_).cwiseAbs().maxCoeff();
+        if (size > settings_.maxStep) delta *= settings_.maxStep / size;
+        const Eigen::VectorXd next = out.x + delta;
+        Eigen::VectorXd nextMapped;
+        try {
+            nextMapped = map_(next);
+            ++out.mapEvaluations;
+        } catch (const std::exception& e) {
+            out.failure = fmt::format("the map failed after Newton step {}: {}", out.iterations + 1, e.what());
+            break;
+        }
+        const double nextMismatch = calcMismatch(next, nextMapped);
+        if (!(nextMismatch <= 10 * out.mismatch)) {
+            out.failure = fmt::format("Newton step {} made the mismatch grow from {:.3g} to {:.3g} perturbation steps",
+                                      out.iterations + 1, out.mismatch, nextMismatch);
+            break;
+        }
+        out.x = next;
+        out.mapped = nextMapped;
+        ++out.iterations;
+        try {
+            out.monodromy = calcMonodromy(out.x, out.mapped);
+            out.mapEvaluations += int(n);
+        } catch (const std::exception& e) {
+            out.failure = fmt::format("the map failed in the monodromy after Newton step {}: {}", out.iterations,
+                                      e.what());
+            break;
+        }
+    }
+    out.multipliers = calcMultipliers(out.monodromy);
+    return out;
+}
+
+}  // namespace rockroll

@@ -1,0 +1,69 @@
+#pragma once
+// Shooting for a fixed point of a map (no model, no Simbody): the scheme of the
+// describing function's twin Floquet check (bespoke/DescribingFunction.cpp,
+// calcTwinFloquet) for any map P over the shooting coordinates x.
+//
+// Newton on F(x) = P(x) − x = 0, with the monodromy matrix by forward differences
+//
+//     M = ∂P/∂x,   M_·i ≈ (P(x + h_i·e_i) − P(x)) / h_i,
+//
+// its columns independent maps evaluated on the program's pool (mbmodel/Parallel.h:
+// each column writes its own slot, so the bits do not depend on the thread count).
+// The Newton step solves (M − I)·δ = −F in least squares (complete orthogonal
+// decomposition): a friction wedge that sticks all period long is neutral (μ = 1,
+// M − I singular up to finite-difference noise), so orbits come in a family along
+// that direction and the step leaves it where it is. Mismatch: max_i |F_i| / s_i,
+// s_i the perturbation steps unless other scales are given; converged below `tolerance`. A step is
+// capped at `maxStep` perturbation steps; a step whose mismatch grows past 10×
+// the current one, or whose map fails, ends the search. The Floquet multipliers
+// are the eigenvalues of M at the last iterate (a sticking wedge contributes one
+// μ = 1 with finite-difference noise).
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+
+namespace rockroll {
+
+struct ShootingSettings {
+    int maxIterations = 8;
+    double tolerance = 5;    ///< converged when max_i |F_i| / h_i is below this
+    double maxStep = 1000;   ///< largest Newton step, in perturbation steps
+    int threads = 0;         ///< parallelFor's limit for the monodromy's columns (0: the pool's)
+};
+
+struct ShootingResult {
+    bool converged = false;
+    Eigen::VectorXd x;          ///< the last iterate
+    Eigen::VectorXd mapped;     ///< P(x)
+    double mismatch = 0;        ///< max_i |P(x)_i − x_i| / h_i
+    int iterations = 0;         ///< Newton steps taken
+    int mapEvaluations = 0;
+    Eigen::MatrixXd monodromy;  ///< M at x
+    Eigen::VectorXcd multipliers;  ///< eigenvalues of M, by decreasing modulus
+    std::string failure;        ///< why it did not converge (empty when it did)
+};
+
+class PeriodicShooting {
+public:
+    /// The map P; it may throw (a failed integration), which ends the search.
+    using Map = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+
+    /// steps: h_i > 0, one per coordinate; scales: s_i > 0 the mismatch is measured in,
+    /// max_i |F_i| / s_i (empty: the steps).
+    PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings = {}, Eigen::VectorXd scales = {});
+
+    ShootingResult solve(const Eigen::VectorXd& guess) const;
+    /// M at x, given P(x).
+    Eigen::MatrixXd calcMonodromy(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const;
+    double calcMismatch(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const;
+    /// Eigenvalues of M, sorted by decreasing modulus (ties: by real part, then imaginary).
+    static Eigen::VectorXcd calcMultipliers(const Eigen::MatrixXd& monodromy);
+    const Eigen::VectorXd& getSteps() const { return steps_; }
+
+private:
+    Map map_;
+    Eigen::VectorXd steps_, scales_;
+    ShootingSettings settings_;
+};
+
+}  // namespace rockroll
