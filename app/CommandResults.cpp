@@ -212,8 +212,15 @@ nlohmann::ordered_json makeSteadyRecords(const nlohmann::ordered_json& steady) {
     const auto& branches = steady.at("branches");
     for (size_t b = 0; b < branches.size(); ++b)
         for (const auto& p : branches[b].at("points")) {
-            nlohmann::ordered_json r{{"branch", b}, {"stability", branches[b].at("stability")}};
-            for (const auto& [key, value] : p.items()) r[key] = value;
+            nlohmann::ordered_json r{{"branch", b}, {"path", branches[b].at("path")},
+                                     {"stability", branches[b].at("stability")}};
+            for (const auto& [key, value] : p.items()) {
+                if (value.is_object()) {  // force harmonics and the twin's maxima: one column each
+                    for (const auto& [field, v] : value.items()) r[key + "_" + field] = v;
+                } else {
+                    r[key] = value;
+                }
+            }
             records.push_back(std::move(r));
         }
     return records;
@@ -234,14 +241,8 @@ SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
                                                                         sc.track.railLength);
     r.inputAmplitude = C;
     const DescribingFunctionModel model(sc.car, C, sc.track.railLength);
-    ContinuationSettings settings;
-    settings.fromMph = o.fromMph;
-    settings.toMph = o.toMph;
-    settings.stability = o.stabilityMethod == "floquet" ? StabilityMethod::Floquet
-                         : o.stabilityMethod == "none"  ? StabilityMethod::None
-                                                        : StabilityMethod::FoldRule;
-    r.branches = model.trace(settings);
-    if (r.branches.empty())
+    r.set = model.trace(makeContinuationSettings(o));
+    if (r.set.paths.empty())
         throw std::runtime_error(fmt::format("no harmonic-balance solution found at {} mph", o.fromMph));
     r.inputNote = fmt::format(
         "sinusoidal cross-level of amplitude {:.4f} in: the fundamental harmonic 8A/(3 pi) cos(pi wheelbase/L_r) "
@@ -250,48 +251,129 @@ SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
     return r;
 }
 
+ContinuationSettings makeContinuationSettings(const SteadyOptions& o) {
+    ContinuationSettings settings;
+    settings.fromMph = o.fromMph;
+    settings.toMph = o.toMph;
+    settings.stability = o.stabilityMethod == "floquet" ? StabilityMethod::Floquet
+                         : o.stabilityMethod == "none"  ? StabilityMethod::None
+                                                        : StabilityMethod::FoldRule;
+    settings.twinPeriods = o.twinPeriods;
+    settings.sweepStepMph = o.sweepStarts ? settings.sweepStepMph : 0;
+    return settings;
+}
+
+namespace {
+nlohmann::ordered_json orNullIfNaN(double x) {
+    return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr);
+}
+nlohmann::ordered_json makeHarmonicsJson(const ForceHarmonics& h) {
+    return {{"mean_lb", h.meanLb}, {"first_harmonic_lb", h.firstLb}, {"second_harmonic_lb", h.secondLb}};
+}
+nlohmann::ordered_json makeTwinJson(const TwinMaxima& t) {
+    if (!t.computed)
+        return {{"periods", t.periods}, {"roll_amplitude_deg", nullptr}, {"persistence", nullptr}, {"stayed", nullptr},
+                {"max_roll_deg", nullptr}, {"max_truck_side_wheel_load_lb", nullptr},
+                {"max_side_bearing_load_lb", nullptr}, {"max_center_plate_load_lb", nullptr}};
+    return {{"periods", t.periods},
+            {"roll_amplitude_deg", t.rollAmplitudeDeg},
+            {"persistence", t.persistence},
+            {"stayed", t.stayed()},
+            {"max_roll_deg", t.maxRollDeg},
+            {"max_truck_side_wheel_load_lb", t.maxTruckSideWheelLoadLb},
+            {"max_side_bearing_load_lb", t.maxSideBearingLoadLb},
+            {"max_center_plate_load_lb", t.maxCenterPlateLoadLb}};
+}
+const char* describeStability(Stability s) {
+    return s == Stability::Stable ? "stable" : s == Stability::Unstable ? "unstable" : "not computed";
+}
+}  // namespace
+
 nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc, const SteadyOptions& o,
                                       const std::string& command) {
+    const ContinuationSettings settings = makeContinuationSettings(o);
     nlohmann::ordered_json j;
     j["car"] = sc.car.name;
     j["amplitude_in"] = sc.track.amplitude / units::inch;
     j["input_amplitude_in"] = r.inputAmplitude / units::inch;
     j["input"] = r.inputNote;
     j["model"] = "describing function (half car, report 4.1 simplifications)";
-    j["stability"] = o.stabilityMethod == "floquet"
-                         ? "Floquet multipliers of the time-domain twin's periodic orbit at every point"
-                     : o.stabilityMethod == "none"
-                         ? "not computed"
-                         : "per stretch between folds: Floquet multipliers of the time-domain twin's periodic orbit "
-                           "at the stretch's middle point";
+    j["stability"] =
+        o.stabilityMethod == "floquet"
+            ? fmt::format("every point checked: Floquet multipliers of the time-domain twin's periodic orbit and a "
+                          "{}-period persistence run of the twin; a point where they disagree is not labelled",
+                          settings.persistencePeriods)
+        : o.stabilityMethod == "none"
+            ? std::string("not computed")
+            : fmt::format("each stretch between folds checked near both ends and in the middle (Floquet multipliers of "
+                          "the time-domain twin's periodic orbit and a {}-period persistence run of the twin), bisected "
+                          "where checks disagree (at most {} checks a stretch); a point takes its nearest check's label, "
+                          "and a check whose Floquet and persistence evidence disagree labels nothing",
+                          settings.persistencePeriods, settings.maxChecksPerStretch);
+    j["forces"] = "force harmonics: mean and first two harmonic amplitudes of each contact force on the two-harmonic "
+                  "motion (exact Fourier coefficients); peak values only from the twin's time history (twin_*), never "
+                  "from the two-harmonic series";
+    j["twin_maxima"] = settings.twinPeriods > 0
+                           ? fmt::format("the time-domain twin run {} forcing periods from each solution; 20 Hz filtered "
+                                         "maxima over its last period; stayed: its roll amplitude there within {:g} % of "
+                                         "the solution's",
+                                         settings.twinPeriods, 100 * kPersistenceTolerance)
+                           : std::string("not computed (--twin-periods 0)");
+    j["starts"] = settings.sweepStepMph > 0
+                      ? fmt::format("both ends of the range from rest, and the twin swept down and up in {:g} mph steps "
+                                    "({} forcing periods a speed, state carried over), each speed's last period "
+                                    "projected on two harmonics and solved",
+                                    settings.sweepStepMph, settings.sweepPeriods)
+                      : std::string("both ends of the range from rest (no sweep starts)");
     j["provenance"] = makeProvenance(sc, command);
     j["provenance"]["model"] = "describing function";  // the scenario's [run] model is not used here
+    j["sweep_starts_tried"] = r.set.sweepStartsTried;
+    j["sweep_starts_new"] = r.set.sweepStartsNew;
+    j["paths"] = nlohmann::ordered_json::array();
+    for (const auto& p : r.set.paths)
+        j["paths"].push_back({{"start", p.start},
+                              {"start_mph", p.startMph},
+                              {"closed", p.closed},
+                              {"points", p.points.size()},
+                              {"folds", p.points.empty() ? 0 : p.points.back().foldsBefore}});
+    j["stability_changes"] = nlohmann::ordered_json::array();
+    for (const auto& c : r.set.changes)
+        j["stability_changes"].push_back({{"path", c.path}, {"from_mph", c.fromMph}, {"to_mph", c.toMph}, {"kind", c.kind}});
     j["branches"] = nlohmann::ordered_json::array();
-    for (const auto& b : r.branches) {
+    for (const auto& b : r.set.branches) {
         nlohmann::ordered_json jb;
+        jb["path"] = b.path;
         // null, never true, when nothing decided it (--stability none, or no evidence).
         jb["stable"] = b.stability == Stability::NotComputed ? nlohmann::ordered_json(nullptr)
                                                               : nlohmann::ordered_json(b.stability == Stability::Stable);
-        jb["stability"] = b.stability == Stability::Stable     ? "stable"
-                          : b.stability == Stability::Unstable ? "unstable"
-                                                               : "not computed";
+        jb["stability"] = describeStability(b.stability);
         jb["points"] = nlohmann::ordered_json::array();
         for (const auto& p : b.points)
             jb["points"].push_back({{"speed_mph", p.speedMph},
                                     {"roll_amplitude_deg", p.rollAmplitudeDeg},
+                                    {"roll_mean_deg", p.rollMeanDeg},
+                                    {"roll_first_harmonic_deg", p.rollFirstDeg},
+                                    {"roll_second_harmonic_deg", p.rollSecondDeg},
                                     {"wheel_lift_fraction", p.wheelLiftFraction},
-                                    {"max_wheel_load_lb", p.maxWheelLoadLb},
-                                    {"max_side_bearing_load_lb", p.maxSideBearingLoadLb},
-                                    {"min_center_plate_load_lb", p.minCenterPlateLoadLb},
+                                    {"wheel_load", makeHarmonicsJson(p.wheelLoad)},
+                                    {"side_bearing_load", makeHarmonicsJson(p.sideBearingLoad)},
+                                    {"center_plate_load", makeHarmonicsJson(p.centerPlateLoad)},
+                                    {"twin", makeTwinJson(p.twin)},
+                                    // Kept for one release, empty: they were pointwise peaks of the two-harmonic
+                                    // series (docs/bespoke.md, "Forces: harmonics, not peaks"); see twin.
+                                    {"max_wheel_load_lb", nullptr},
+                                    {"max_side_bearing_load_lb", nullptr},
+                                    {"min_center_plate_load_lb", nullptr},
                                     {"folds_before", p.foldsBefore},
+                                    {"checked", p.checked},
                                     {"floquet_converged", p.floquetConverged},
                                     {"stability_evidence", p.stabilityEvidence},
                                     {"twin_persistence", std::isfinite(p.twinPersistence) && p.twinPersistence > 0
                                                              ? nlohmann::ordered_json(p.twinPersistence)
                                                              : nlohmann::ordered_json(nullptr)},
-                                    {"max_floquet_multiplier",
-                                     std::isfinite(p.maxFloquetMultiplier) ? nlohmann::ordered_json(p.maxFloquetMultiplier)
-                                                                           : nlohmann::ordered_json(nullptr)}});
+                                    {"max_floquet_multiplier", orNullIfNaN(p.maxFloquetMultiplier)},
+                                    {"dominant_multiplier_re", orNullIfNaN(p.checked ? p.dominantMultiplier.real() : NAN)},
+                                    {"dominant_multiplier_im", orNullIfNaN(p.checked ? p.dominantMultiplier.imag() : NAN)}});
         j["branches"].push_back(jb);
     }
     return j;

@@ -42,12 +42,14 @@ nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
 struct SteadyResult {
     double inputAmplitude = 0;  ///< C: the fundamental of the cross-level [m]
     std::string inputNote;      ///< what the input is, in words
-    std::vector<SteadyStateBranch> branches;
+    SteadyStateSet set;         ///< paths, their stretches of one stability, stability changes
 };
 /// The describing-function steady state of `sc` (its amplitude already set) from
 /// o.fromMph to o.toMph with o.stabilityMethod; std::invalid_argument for an empty
 /// speed range, std::runtime_error when no solution is found.
 SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o);
+/// The continuation settings `rockroll steady` runs with.
+ContinuationSettings makeContinuationSettings(const SteadyOptions& o);
 /// `rockroll steady --json`.
 nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc, const SteadyOptions& o,
                                       const std::string& command);

@@ -218,13 +218,36 @@ int steadyCommand(const SteadyOptions& o) {
     fmt::print("rockroll steady — describing function, {} car\ninput: {}\n", sc.car.name, r.inputNote);
     printOverrides(sc);
     fmt::print("\n");
-    fmt::print("{:>10}{:>12}{:>12}{:>14}{:>14}{:>10}{:>14}\n", "speed mph", "roll deg", "lift frac", "wheel lb",
-               "side brg lb", "|mu|max", "stable");
-    for (const auto& b : r.branches)
-        for (const auto& p : b.points)
-            fmt::print("{:>10.3f}{:>12.3f}{:>12.3f}{:>14.0f}{:>14.0f}{:>10.3f}{:>14}\n", p.speedMph, p.rollAmplitudeDeg,
-                       p.wheelLiftFraction, p.maxWheelLoadLb, p.maxSideBearingLoadLb, p.maxFloquetMultiplier,
-                       toString(b.stability));
+    fmt::print("paths (each a continuation, and how it was started):\n");
+    for (size_t k = 0; k < r.set.paths.size(); ++k) {
+        const auto& p = r.set.paths[k];
+        fmt::print("  {}: {}, {} points, {} folds{}\n", k, p.start, p.points.size(),
+                   p.points.empty() ? 0 : p.points.back().foldsBefore, p.closed ? ", closed (an isola)" : "");
+    }
+    for (const auto& c : r.set.changes)
+        fmt::print("  stability changes without a fold on path {} between {:.2f} and {:.2f} mph: {}\n", c.path,
+                   c.fromMph, c.toMph, c.kind);
+    fmt::print("\nroll: two-harmonic amplitude; side-bearing load: mean and |1st harmonic| (harmonic balance fixes these, "
+               "not peaks);\ntwin: the time-domain twin run {} periods from the solution, 20 Hz filtered maxima over "
+               "its last period\n",
+               o.twinPeriods);
+    fmt::print("{:>5}{:>10}{:>10}{:>10}{:>12}{:>12}{:>11}{:>14}{:>14}{:>9}{:>14}\n", "path", "speed mph", "roll deg",
+               "lift frac", "SB mean lb", "SB 1st lb", "twin roll", "twin wheel lb", "twin SB lb", "|mu|max",
+               "stable");
+    for (const auto& b : r.set.branches)
+        for (const auto& p : b.points) {
+            const std::string twinRoll = p.twin.computed ? fmt::format("{:.3f}{}", p.twin.rollAmplitudeDeg,
+                                                                       p.twin.stayed() ? "" : "*")
+                                                         : "-";
+            fmt::print("{:>5}{:>10.3f}{:>10.3f}{:>10.3f}{:>12.0f}{:>12.0f}{:>11}{:>14}{:>14}{:>9.3f}{:>14}\n", b.path,
+                       p.speedMph, p.rollAmplitudeDeg, p.wheelLiftFraction, p.sideBearingLoad.meanLb,
+                       p.sideBearingLoad.firstLb, twinRoll,
+                       p.twin.computed ? fmt::format("{:.0f}", p.twin.maxTruckSideWheelLoadLb) : "-",
+                       p.twin.computed ? fmt::format("{:.0f}", p.twin.maxSideBearingLoadLb) : "-",
+                       p.maxFloquetMultiplier, toString(b.stability));
+        }
+    if (o.twinPeriods > 0) fmt::print("* the twin left the solution (its roll amplitude moved by more than {:g} %)\n",
+                                      100 * kPersistenceTolerance);
     if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("steady.csv").string(),
                         dir->getFinalPath("steady.json").string());
     return 0;

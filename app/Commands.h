@@ -37,6 +37,8 @@ struct SteadyOptions : CommonOptions {
     double fromMph = 10, toMph = 22;
     bool json = false;
     std::string stabilityMethod = "fold";  ///< fold | floquet | none
+    int twinPeriods = 5;      ///< the twin's run per point for its maxima; 0: none
+    bool sweepStarts = true;  ///< also start paths from the twin's swept steady states
 };
 
 struct SweepOptions : CommonOptions {

@@ -122,7 +122,7 @@ int validateCommand(const ValidateOptions& o) {
     step("Tables 3 and 4");
     md += section("Table 3", [&] { return makeTable3Section(s, sweeps, steady, uncertainty, meta); });
     md += section("Table 4", [&] { return makeTable4Section(s, sweeps, uncertainty); });
-    md += section("describing function", [&] { return makeDescribingFunctionSection(s, steady, meta); });
+    md += section("describing function", [&] { return makeDescribingFunctionSection(s, steady, sweeps, meta); });
     step("modes");
     md += section("modes", [&] { return makeModesSection(); });
     md += convergenceMd;

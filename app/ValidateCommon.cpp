@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace rockroll::app::validate_detail {
 
 void runJobs(const std::vector<std::function<void()>>& jobs, int threads) {
@@ -155,24 +157,37 @@ std::string formatBranchTable(const std::vector<BranchRow>& rows, const std::vec
     return md;
 }
 
-std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateBranch>& branches, double mph,
-                                                  bool stableOnly) {
-    std::vector<std::pair<bool, SteadyStatePoint>> pts;
-    for (const auto& b : branches)
-        for (const auto& p : b.points) pts.push_back({b.stability == Stability::Stable, p});
-    std::optional<std::array<double, 3>> best;
-    for (size_t k = 1; k < pts.size(); ++k) {
-        const auto& a = pts[k - 1].second;
-        const auto& b = pts[k].second;
-        if ((a.speedMph - mph) * (b.speedMph - mph) > 0 || a.speedMph == b.speedMph) continue;
-        if (stableOnly && !(pts[k - 1].first && pts[k].first)) continue;
-        const double f = (mph - a.speedMph) / (b.speedMph - a.speedMph);
-        const std::array<double, 3> v{a.rollAmplitudeDeg + f * (b.rollAmplitudeDeg - a.rollAmplitudeDeg),
-                                      a.maxWheelLoadLb + f * (b.maxWheelLoadLb - a.maxWheelLoadLb),
-                                      a.maxSideBearingLoadLb + f * (b.maxSideBearingLoadLb - a.maxSideBearingLoadLb)};
-        if (!best || v[0] > (*best)[0]) best = v;
-    }
+namespace {
+/// Every solution of `set` at `mph` with its stability: one per crossing of a path.
+std::vector<std::pair<SteadyAt, bool>> collectSteadyAt(const SteadyStateSet& set, double mph) {
+    std::vector<std::pair<SteadyAt, bool>> out;
+    for (const auto& path : set.paths)
+        for (size_t k = 1; k < path.points.size(); ++k) {
+            const SteadyStatePoint& a = path.points[k - 1];
+            const SteadyStatePoint& b = path.points[k];
+            if ((a.speedMph - mph) * (b.speedMph - mph) > 0 || a.speedMph == b.speedMph) continue;
+            const double f = (mph - a.speedMph) / (b.speedMph - a.speedMph);
+            SteadyAt v;
+            v.rollAmplitudeDeg = a.rollAmplitudeDeg + f * (b.rollAmplitudeDeg - a.rollAmplitudeDeg);
+            v.twin = f < 0.5 ? a.twin : b.twin;
+            out.push_back({v, a.stability == Stability::Stable && b.stability == Stability::Stable});
+        }
+    return out;
+}
+}  // namespace
+
+std::optional<SteadyAt> findSteadyAt(const SteadyStateSet& set, double mph, bool stableOnly) {
+    std::optional<SteadyAt> best;
+    for (const auto& [v, stable] : collectSteadyAt(set, mph))
+        if ((!stableOnly || stable) && (!best || v.rollAmplitudeDeg > best->rollAmplitudeDeg)) best = v;
     return best;
+}
+
+std::vector<SteadyAt> findAllSteadyAt(const SteadyStateSet& set, double mph) {
+    std::vector<SteadyAt> out;
+    for (const auto& [v, stable] : collectSteadyAt(set, mph)) out.push_back(v);
+    std::sort(out.begin(), out.end(), [](const SteadyAt& a, const SteadyAt& b) { return a.rollAmplitudeDeg < b.rollAmplitudeDeg; });
+    return out;
 }
 
 }  // namespace rockroll::app::validate_detail

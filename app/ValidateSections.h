@@ -65,7 +65,7 @@ struct ResidualUncertainty {
     std::string describe() const;
 };
 /// Describing-function solutions per amplitude (70-ton loaded), sections 3 and 5.
-using SteadyByAmplitude = std::map<double, std::vector<SteadyStateBranch>>;
+using SteadyByAmplitude = std::map<double, SteadyStateSet>;
 
 /// The report this run replaces (its default-case runs and commit), read before it is overwritten.
 struct PreviousReport {
@@ -98,7 +98,8 @@ std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>&
 std::string makeTable4Section(const Settings& s, const std::vector<SweepResult>& sweeps, const ResidualUncertainty& u);
 /// 5. Describing function (ValidateDescribingFunction.cpp); traceSteady also feeds section 3.
 SteadyByAmplitude traceSteady(const Settings& s);
-std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmplitude& steady, nlohmann::ordered_json& meta);
+std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmplitude& steady,
+                                         const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta);
 /// 6. Modes against Table 1 (ValidateModes.cpp).
 std::string makeModesSection();
 /// 7. Convergence in contact stiffness and integrator accuracy (ValidateConvergence.cpp).
@@ -187,10 +188,16 @@ struct BranchColumn {
 std::string formatBranchTable(const std::vector<BranchRow>& rows, const std::vector<BranchColumn>& columns,
                               const std::vector<double>& published, bool steady);
 
-/// The largest (stable, when stability was decided) describing-function solution at
-/// `mph`, interpolated along the path: roll amplitude, wheel load, side bearing.
-std::optional<std::array<double, 3>> findSteadyAt(const std::vector<SteadyStateBranch>& branches, double mph,
-                                                  bool stableOnly);
+/// A describing-function solution at one speed: its two-harmonic roll amplitude
+/// (interpolated along its path) and the twin maxima of the nearer traced point.
+struct SteadyAt {
+    double rollAmplitudeDeg = 0;
+    TwinMaxima twin;
+};
+/// The largest (stable, when stableOnly) describing-function solution at `mph`.
+std::optional<SteadyAt> findSteadyAt(const SteadyStateSet& set, double mph, bool stableOnly);
+/// Every describing-function solution at `mph` (any stability), roll amplitudes ascending.
+std::vector<SteadyAt> findAllSteadyAt(const SteadyStateSet& set, double mph);
 
 }  // namespace validate_detail
 }  // namespace rockroll::app

@@ -58,18 +58,29 @@ std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>&
         if (!row.branch.empty()) md += fmt::format(" — the report's number is most likely on {}", row.branch);
         md += "\n\nSteady part:\n\n" + formatBranchTable(rows, columns, published, true);
         // The describing function's largest (stable, in the full run) solution at this speed:
-        // its roll amplitude only. Harmonic balance fixes a force's mean and first two
-        // harmonics, not its peak, so no load of it stands beside the time-domain maxima.
+        // its roll amplitude, and the loads of its time-domain twin run from it (20 Hz
+        // filtered maxima over the twin's last period, a steady-part value like the rows
+        // above). Harmonic balance itself fixes a force's mean and first two harmonics, not its peak.
         if (row.car == "70ton-loaded")
-            for (const auto& [a, branches] : steady)
+            for (const auto& [a, set] : steady)
                 if (std::abs(a - row.amplitudeIn) < 1e-9) {
-                    if (const auto df = findSteadyAt(branches, row.speedMph, !s.quick))
-                        md += fmt::format("| describing function | {} | {:g} | — | {:.2f} ({}) | — | not a peak | not a peak | — |\n",
+                    if (const auto df = findSteadyAt(set, row.speedMph, !s.quick)) {
+                        const TwinMaxima& t = df->twin;
+                        const bool loads = t.stayed();
+                        auto load = [&](double x, double report) {
+                            return loads ? fmt::format("{:.0f} ({}) twin", x, fmtPct(x, report))
+                                         : std::string(t.computed ? "twin left the solution" : "twin not run");
+                        };
+                        md += fmt::format("| describing function | {} | {:g} | — | {:.2f} ({}) | — | {} | {} | {} |\n",
                                           s.quick ? "largest solution" : "largest stable solution", row.speedMph,
-                                          (*df)[0], fmtPct((*df)[0], row.report[0]));
-                    else
+                                          df->rollAmplitudeDeg, fmtPct(df->rollAmplitudeDeg, row.report[0]),
+                                          load(t.maxTruckSideWheelLoadLb, row.report[2]),
+                                          load(t.maxSideBearingLoadLb, row.report[3]),
+                                          load(t.maxCenterPlateLoadLb, row.report[4]));
+                    } else {
                         md += fmt::format("| describing function | no {}solution traced at this speed | {:g} | | | | | | |\n",
                                           s.quick ? "" : "stable ", row.speedMph);
+                    }
                 }
         md += "\nWhole run:\n\n" + formatBranchTable(rows, columns, published, false) + "\n";
         for (const auto& r : rows) {
@@ -82,9 +93,11 @@ std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>&
         }
     }
     md += "The describing-function row is its largest solution at the report's speed (section 5): roll is its harmonic "
-          "amplitude (half peak-to-peak). Its loads are left out: harmonic balance determines a force's mean and first "
-          "two harmonics, not its peak, and the pointwise peak of the two-harmonic series pressed into a stiff "
-          "one-sided contact is an artifact of the method (it grows with the contact stiffness, docs/bespoke.md).\n\n";
+          "amplitude (half peak-to-peak); its loads (marked twin) are the 20 Hz filtered maxima over the last period of "
+          "its time-domain twin run from the solution (" + std::to_string(ContinuationSettings{}.twinPeriods) +
+          " forcing periods), shown only where the twin stays on the solution. Harmonic balance determines a force's mean and first two harmonics, not its peak: the pointwise "
+          "peak of the two-harmonic series pressed into a stiff one-sided contact is an artifact of the method (it "
+          "grows with the contact stiffness, docs/bespoke.md) and is not shown.\n\n";
     md += "Where the models differ from the report: (1) wheel lift — the reduced model (ours and the report's) lifts "
           "a wheel by inches, the Simbody models and the eom twin by tenths of an inch; section 10 attributes the "
           "difference by changing one factor at a time. (2) Forces — how much they move with the assumed contact "

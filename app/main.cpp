@@ -119,10 +119,18 @@ int main(int argc, char** argv) {
     steadyCmd->add_flag("--json", steady.json, "print exactly one JSON object on stdout");
     addCommonOptions(steadyCmd, steady, "write steady.csv and steady.json into this directory");
     steadyCmd->add_option("--stability", steady.stabilityMethod,
-                          "fold: each stretch between folds by Floquet on the time-domain twin at its middle point; "
+                          "fold: each stretch between folds checked near both ends and in the middle (Floquet on the "
+                          "time-domain twin's orbit and a persistence run), bisected where checks disagree; "
                           "floquet: every point (slow); none")
         ->capture_default_str()
         ->check(oneOf({"fold", "floquet", "none"}));
+    steadyCmd->add_option("--twin-periods", steady.twinPeriods,
+                          "forcing periods the time-domain twin runs from each solution for its 20 Hz filtered maxima "
+                          "over the last one; 0: no twin maxima")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 100));
+    steadyCmd->add_flag("!--no-sweep-starts", steady.sweepStarts,
+                        "start paths only from both ends of the range, not from the twin's swept steady states");
 
     app::SweepOptions sweep;
     CLI::App* sweepCmd = cli.add_subcommand(

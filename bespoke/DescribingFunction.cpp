@@ -4,11 +4,15 @@
 #include "bespoke/StiffIntegrator.h"
 #include "contacts/BristleFriction.h"
 #include "mbmodel/Parallel.h"
+#include "mbmodel/RunSummary.h"
 #include "mbmodel/Units.h"
 
 #include <unsupported/Eigen/NonLinearOptimization>
 
+#include <fmt/format.h>
+
 #include <functional>
+#include <set>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -29,6 +33,7 @@ constexpr double kUnknownScale = 1e-3;  // unknowns in mm and mrad
 constexpr double kForceScale = 1e4;     // residuals in 10 kN and 10 kN·m
 constexpr int kSamples = 720;           // per period, for output maxima
 constexpr int kAxisY = 1, kAxisZ = 2;
+constexpr double kTwinAccuracy = 1e-4;  // the twin maxima's runs and the sweep starts
 
 PiecewiseLinearLaw makeLinear(double stiffness, double damping) {
     // f = −k·d − c·ḋ
@@ -291,61 +296,132 @@ std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double spe
     return x;
 }
 
+bool TwinMaxima::stayed() const {
+    return computed && std::abs(persistence - 1) <= kPersistenceTolerance;
+}
+
 SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, double speedMph) const {
     const double omega = calcOmega(speedMph);
     const std::vector<TrigSeries> q = getPositions(x);
     SteadyStatePoint p;
     p.speedMph = speedMph;
     p.harmonics = x;
-    double rollMin = 1e9, rollMax = -1e9, minPlate = 1e300;
-    int lifted = 0;
-    std::vector<TrigSeries> d(elements_.size()), rate(elements_.size());
+    p.rollMeanDeg = q[0].getMean() / units::degree;
+    p.rollFirstDeg = std::hypot(q[0].getCos(1), q[0].getSin(1)) / units::degree;
+    p.rollSecondDeg = std::hypot(q[0].getCos(2), q[0].getSin(2)) / units::degree;
+    // The force harmonics: exact Fourier coefficients of each law on the two-harmonic
+    // motion, the quantities the balance itself uses (calcElementHarmonics).
+    auto toHarmonics = [](const TrigSeries& f) {
+        return ForceHarmonics{f.getMean() / units::lbf, std::hypot(f.getCos(1), f.getSin(1)) / units::lbf,
+                              std::hypot(f.getCos(2), f.getSin(2)) / units::lbf};
+    };
+    TrigSeries plate(kHarmonics);
+    std::vector<size_t> wheels;
     for (size_t i = 0; i < elements_.size(); ++i) {
-        d[i] = calcRelative(q, elements_[i]);
-        rate[i] = d[i].derivative() * omega;
+        const Element& e = elements_[i];
+        if (e.name != "wheel" && e.name != "side_bearing" && e.name != "rim") continue;
+        const TrigSeries f = calcElementHarmonics(q, e, omega)[0];
+        if (e.name == "rim") {
+            plate += f;
+            continue;
+        }
+        ForceHarmonics& out = e.name == "wheel" ? p.wheelLoad : p.sideBearingLoad;
+        const ForceHarmonics h = toHarmonics(f);
+        if (h.firstLb >= out.firstLb) out = h;
+        if (e.name == "wheel") wheels.push_back(i);
     }
-    // sin kτ, cos kτ of every sample, once (evaluate(Angles) is bit-identical to evaluate(τ)).
+    p.centerPlateLoad = toHarmonics(plate);
+    // Roll amplitude and wheel lift: properties of the two-harmonic motion, sampled.
     static const std::vector<TrigSeries::Angles> samples = [] {
         std::vector<TrigSeries::Angles> a;
         for (int s = 0; s < kSamples; ++s) a.emplace_back(2 * std::numbers::pi * s / kSamples, kHarmonics);
         return a;
     }();
-    enum class Role { Other, Wheel, SideBearing, Rim };
-    std::vector<Role> role(elements_.size(), Role::Other);
-    for (size_t i = 0; i < elements_.size(); ++i)
-        role[i] = elements_[i].name == "wheel"          ? Role::Wheel
-                  : elements_[i].name == "side_bearing" ? Role::SideBearing
-                  : elements_[i].name == "rim"          ? Role::Rim
-                                                        : Role::Other;
-    for (int s = 0; s < kSamples; ++s) {
-        const TrigSeries::Angles& tau = samples[s];
+    std::vector<TrigSeries> d;
+    for (size_t i : wheels) d.push_back(calcRelative(q, elements_[i]));
+    double rollMin = 1e9, rollMax = -1e9;
+    int lifted = 0;
+    for (const TrigSeries::Angles& tau : samples) {
         const double roll = q[0].evaluate(tau);
         rollMin = std::min(rollMin, roll);
         rollMax = std::max(rollMax, roll);
-        double plate = 0;
         bool anyLift = false;
-        for (size_t i = 0; i < elements_.size(); ++i) {
-            const Element& e = elements_[i];
-            const auto* law = std::get_if<PiecewiseLinearLaw>(&e.law);
-            if (!law) continue;
-            const double f = law->evaluate(d[i].evaluate(tau), rate[i].evaluate(tau));
-            if (role[i] == Role::Wheel) {
-                p.maxWheelLoadLb = std::max(p.maxWheelLoadLb, f / units::lbf);
-                anyLift = anyLift || f <= 0;
-            } else if (role[i] == Role::SideBearing) {
-                p.maxSideBearingLoadLb = std::max(p.maxSideBearingLoadLb, f / units::lbf);
-            } else if (role[i] == Role::Rim) {
-                plate += f;
-            }
-        }
-        minPlate = std::min(minPlate, plate);
+        for (const TrigSeries& di : d) anyLift = anyLift || di.evaluate(tau) >= 0;  // penetration −d ≤ 0
         lifted += anyLift ? 1 : 0;
     }
     p.rollAmplitudeDeg = 0.5 * (rollMax - rollMin) / units::degree;
     p.wheelLiftFraction = double(lifted) / kSamples;
-    p.minCenterPlateLoadLb = minPlate / units::lbf;
     p.maxFloquetMultiplier = std::numeric_limits<double>::quiet_NaN();
+    p.twinPersistence = std::numeric_limits<double>::quiet_NaN();
     return p;
+}
+
+TwinMaxima DescribingFunctionModel::calcTwinMaxima(const Eigen::VectorXd& x, double speedMph, int periods) const {
+    TwinMaxima out;
+    out.periods = periods;
+    if (periods <= 0) return out;
+    const EomHalfCarModel twin = makeTwin(speedMph);
+    const double period = 2 * std::numbers::pi / calcOmega(speedMph);
+    RunResult run;
+    try {
+        // The scenarios' accuracy (1e-4): the accuracy study moves eom's filtered maxima by
+        // at most 0.7 % from 1e-4 to 1e-6 (docs/validation.md, section 7).
+        run = simulateEom(twin, {periods * period, 500, kTwinAccuracy, RunLimits{}}, makeTwinState(x, speedMph));
+    } catch (const NumericalFailure&) {
+        return out;
+    }
+    SummaryOptions o;
+    o.forcingPeriod = period;
+    o.steadyCycles = 1;
+    const RunSummary s = summarizeRun(run, twin.getChannels(), o);
+    const int c = run.history.column("roll_deg");
+    double lo = 1e9, hi = -1e9;
+    for (const auto& row : run.history.samples)
+        if (row[0] >= (periods - 1) * period - 1e-9) lo = std::min(lo, row[c]), hi = std::max(hi, row[c]);
+    out.computed = true;
+    out.rollAmplitudeDeg = 0.5 * (hi - lo);
+    out.persistence = out.rollAmplitudeDeg / describe(x, speedMph).rollAmplitudeDeg;
+    out.maxRollDeg = s.steady.rollDeg;
+    out.maxTruckSideWheelLoadLb = s.steady.truckSideWheelLoadLb;
+    out.maxSideBearingLoadLb = s.steady.sideBearingLoadLb;
+    out.maxCenterPlateLoadLb = s.steady.centerPlateLoadLb;
+    return out;
+}
+
+Eigen::VectorXd DescribingFunctionModel::projectTwinState(const EomHalfCarModel::State& y0, double speedMph,
+                                                          int periods, EomHalfCarModel::State* end) const {
+    using M = EomHalfCarModel;
+    const EomHalfCarModel twin = makeTwin(speedMph);
+    const double period = 2 * std::numbers::pi / calcOmega(speedMph);
+    const double accuracy = kTwinAccuracy;  // a guess for solve(), which then converges on its own
+    StiffIntegrator integ(
+        M::kNumStates,
+        [&twin](double t, const double* y, double* yDot) {
+            M::State s = Eigen::Map<const M::State>(y), d;
+            twin.calcStateDerivative(t, s, d);
+            Eigen::Map<M::State> out(yDot);
+            out = d;
+        },
+        accuracy, getEomAbsoluteTolerances(accuracy));
+    integ.initialize(0, y0.data());
+    integ.advanceTo((periods - 1) * period);
+    // The last period sampled at K points: the DFT's mean, first and second harmonics.
+    constexpr int K = 64;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(kNumUnknowns);
+    for (int k = 1; k <= K; ++k) {
+        integ.advanceTo((periods - 1 + double(k) / K) * period);
+        const double tau = 2 * std::numbers::pi * k / K;
+        for (int j = 0; j < M::kNumDofs; ++j) {
+            const double qj = integ.getState()[j] / kUnknownScale;
+            x[kCoefficients * j] += qj / K;
+            for (int h = 1; h <= kHarmonics; ++h) {
+                x[kCoefficients * j + 2 * h - 1] += 2.0 / K * qj * std::cos(h * tau);
+                x[kCoefficients * j + 2 * h] += 2.0 / K * qj * std::sin(h * tau);
+            }
+        }
+    }
+    if (end) *end = M::State(Eigen::Map<const M::State>(integ.getState().data()));
+    return x;
 }
 
 EomHalfCarModel DescribingFunctionModel::makeTwin(double speedMph) const {
@@ -445,7 +521,10 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
         base = baseNext;
         Phi = monodromyAt(y, base);
     }
-    out.maxMultiplier = Phi.eigenvalues().cwiseAbs().maxCoeff();
+    const Eigen::VectorXcd mu = Phi.eigenvalues();
+    Eigen::Index largest = 0;
+    out.maxMultiplier = mu.cwiseAbs().maxCoeff(&largest);
+    out.dominant = mu[largest];
     // The orbit found must be this solution's, not a neighbouring branch's.
     const RunResult one = simulateEom(twin, {period, 400, accuracy, RunLimits{}}, y);
     const int c = one.history.column("roll_deg");
@@ -468,7 +547,7 @@ double DescribingFunctionModel::calcTwinPersistence(const Eigen::VectorXd& x, do
     return 0.5 * (hi - lo) / describe(x, speedMph).rollAmplitudeDeg;
 }
 
-std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const ContinuationSettings& s) const {
+SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) const {
     // Unknowns u = [x (45, mm and mrad), V (mph)]; residual R(x, V) = 0 plus the
     // arclength condition t·(u − u_pred) = 0, t the unit tangent (null vector of ∂R/∂u).
     const int n = kNumUnknowns;
@@ -486,124 +565,289 @@ std::vector<SteadyStateBranch> DescribingFunctionModel::trace(const Continuation
         Eigen::VectorXd t = A.fullPivLu().solve(rhs);
         return Eigen::VectorXd(t / t.norm());
     };
+    const auto outside = [&](double v) { return v > s.toMph + 1e-9 || v < s.fromMph - 1e-9; };
 
-    std::vector<SteadyStatePoint> points;
-    const std::optional<Eigen::VectorXd> start = solveFromRest(s.fromMph);
-    if (!start) return {};
-    Eigen::VectorXd u(n + 1);
-    u << *start, s.fromMph;
+    // One direction of the continuation from u along t: the points after u, up to and
+    // including the first one outside the range; `closed` when it comes back to `origin`.
+    auto continueFrom = [&](Eigen::VectorXd u, Eigen::VectorXd t, const Eigen::VectorXd& origin, bool& closed) {
+        std::vector<Eigen::VectorXd> out;
+        double ds = s.initialStep, travelled = 0;
+        while (int(out.size()) < s.maxPoints) {
+            const Eigen::VectorXd predicted = u + ds * t;
+            int evaluations = 0;
+            const auto corrected = solvePowell(
+                [&](const Eigen::VectorXd& v) {
+                    Eigen::VectorXd r(n + 1);
+                    r.head(n) = residualOf(v);
+                    r[n] = t.dot(v - predicted);
+                    return r;
+                },
+                predicted, 1e-7, &evaluations, [&](const Eigen::VectorXd& v) {
+                    Eigen::MatrixXd J(n + 1, n + 1);
+                    J.topRows(n) = jacobianOf(v);
+                    const double c0 = t.dot(v - predicted);
+                    for (int i = 0; i <= n; ++i) {  // the arclength row by the same differences
+                        Eigen::VectorXd vp = v;
+                        const double h = 1e-6 * std::max(1.0, std::abs(v[i]));
+                        vp[i] += h;
+                        J(n, i) = (t.dot(vp - predicted) - c0) / h;
+                    }
+                    return J;
+                });
+            if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
+                ds *= 0.5;
+                if (ds < s.minStep) break;
+                continue;
+            }
+            travelled += (*corrected - u).norm();
+            u = *corrected;
+            t = tangentAt(u, t);
+            out.push_back(u);
+            if (outside(u[n])) break;
+            // Back at the start after going round: a closed curve of solutions (an isola).
+            if (travelled > 4 * s.maxStep && (u - origin).norm() < std::max(2 * ds, 0.5)) {
+                closed = true;
+                break;
+            }
+            if (evaluations < 8 * (n + 2)) ds = std::min(s.maxStep, ds * 1.5);
+        }
+        return out;
+    };
+
+    SteadyStateSet set;
     Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
     e[n] = 1;
-    Eigen::VectorXd t = tangentAt(u, e);
-    points.push_back(describe(u.head(n), u[n]));
-    double ds = s.initialStep;
-    while (int(points.size()) < s.maxPoints) {
-        const Eigen::VectorXd predicted = u + ds * t;
-        int evaluations = 0;
-        const auto corrected = solvePowell(
-            [&](const Eigen::VectorXd& v) {
-                Eigen::VectorXd r(n + 1);
-                r.head(n) = residualOf(v);
-                r[n] = t.dot(v - predicted);
-                return r;
-            },
-            predicted, 1e-7, &evaluations, [&](const Eigen::VectorXd& v) {
-                Eigen::MatrixXd J(n + 1, n + 1);
-                J.topRows(n) = jacobianOf(v);
-                const double c0 = t.dot(v - predicted);
-                for (int i = 0; i <= n; ++i) {  // the arclength row by the same differences
-                    Eigen::VectorXd vp = v;
-                    const double h = 1e-6 * std::max(1.0, std::abs(v[i]));
-                    vp[i] += h;
-                    J(n, i) = (t.dot(vp - predicted) - c0) / h;
-                }
-                return J;
-            });
-        if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
-            ds *= 0.5;
-            if (ds < s.minStep) break;
-            continue;
+    // A path through the solution x at speedMph, continued towards higher speed
+    // (direction +1), lower (−1) or both (0).
+    auto makePath = [&](const Eigen::VectorXd& x, double speedMph, int direction, std::string start) {
+        Eigen::VectorXd u0(n + 1);
+        u0 << x, speedMph;
+        SteadyStatePath path;
+        path.start = std::move(start);
+        path.startMph = speedMph;
+        std::vector<Eigen::VectorXd> us{u0};
+        const Eigen::VectorXd t0 = tangentAt(u0, direction < 0 ? Eigen::VectorXd(-e) : e);
+        bool closed = false;
+        const std::vector<Eigen::VectorXd> ahead = continueFrom(u0, t0, u0, closed);
+        us.insert(us.end(), ahead.begin(), ahead.end());
+        if (direction == 0 && !closed) {
+            bool unused = false;
+            std::vector<Eigen::VectorXd> behind = continueFrom(u0, -t0, u0, unused);
+            us.insert(us.begin(), behind.rbegin(), behind.rend());
         }
-        u = *corrected;
-        t = tangentAt(u, t);
-        points.push_back(describe(u.head(n), u[n]));
-        if (u[n] > s.toMph || u[n] < s.fromMph - 1e-9) break;
-        if (evaluations < 8 * (n + 2)) ds = std::min(s.maxStep, ds * 1.5);
-    }
+        path.closed = closed;
+        for (const auto& u : us) path.points.push_back(describe(u.head(n), u[n]));
+        // Folds: where the speed along the path turns back.
+        auto& pts = path.points;
+        for (size_t i = 1; i < pts.size(); ++i) {
+            pts[i].foldsBefore = pts[i - 1].foldsBefore;
+            if (i >= 2 && (pts[i].speedMph - pts[i - 1].speedMph) * (pts[i - 1].speedMph - pts[i - 2].speedMph) < 0)
+                ++pts[i].foldsBefore;
+        }
+        return path;
+    };
+    // Whether a solution lies on a path already traced: within 10 % (plus 0.05 mm or
+    // mrad) of the path's harmonics interpolated to its speed, means left out.
+    auto isKnown = [&](const Eigen::VectorXd& x, double speedMph) {
+        auto distance = [&](const Eigen::VectorXd& a) {
+            double d = 0, size = 0;
+            for (int i = 0; i < n; ++i)
+                if (i % kCoefficients != 0) d = std::max(d, std::abs(x[i] - a[i])), size = std::max(size, std::abs(x[i]));
+            return d <= 0.1 * size + 0.05;
+        };
+        for (const auto& path : set.paths)
+            for (size_t i = 0; i < path.points.size(); ++i) {
+                const SteadyStatePoint& a = path.points[i];
+                if (std::abs(a.speedMph - speedMph) < 1e-6 && distance(a.harmonics)) return true;
+                if (i + 1 == path.points.size()) continue;
+                const SteadyStatePoint& b = path.points[i + 1];
+                if ((a.speedMph - speedMph) * (b.speedMph - speedMph) >= 0 || a.speedMph == b.speedMph) continue;
+                const double f = (speedMph - a.speedMph) / (b.speedMph - a.speedMph);
+                if (distance(a.harmonics + f * (b.harmonics - a.harmonics))) return true;
+            }
+        return false;
+    };
 
-    // Folds: where the speed along the path turns back.
-    for (size_t i = 1; i < points.size(); ++i) {
-        points[i].foldsBefore = points[i - 1].foldsBefore;
-        if (i >= 2 && (points[i].speedMph - points[i - 1].speedMph) * (points[i - 1].speedMph - points[i - 2].speedMph) < 0)
-            ++points[i].foldsBefore;
+    // Starts: the two ends of the range, from rest.
+    if (const auto x = solveFromRest(s.fromMph))
+        set.paths.push_back(makePath(*x, s.fromMph, +1, fmt::format("rest at {:g} mph", s.fromMph)));
+    if (const auto x = solveFromRest(s.toMph); x && !isKnown(*x, s.toMph))
+        set.paths.push_back(makePath(*x, s.toMph, -1, fmt::format("rest at {:g} mph", s.toMph)));
+    // Starts from the twin's own sweeps, down and up, each speed's last period projected.
+    if (s.sweepStepMph > 0 && s.sweepPeriods > 0) {
+        struct Candidate {
+            TwinSweepStart record;
+            std::optional<Eigen::VectorXd> x;
+        };
+        std::vector<std::vector<Candidate>> sweeps(2);
+        const int count = int(std::floor((s.toMph - s.fromMph) / s.sweepStepMph + 1e-9)) + 1;
+        parallelFor(2, 0, [&](size_t dir) {
+            EomHalfCarModel::State y = reference_.makeStaticState();
+            for (int k = 0; k < count; ++k) {
+                const double v = dir == 0 ? s.toMph - k * s.sweepStepMph : s.fromMph + k * s.sweepStepMph;
+                Candidate c;
+                c.record.speedMph = v;
+                c.record.direction = dir == 0 ? "down" : "up";
+                try {
+                    EomHalfCarModel::State end;
+                    // Whole periods: the input's phase carries over to the next speed.
+                    c.x = projectTwinState(y, v, s.sweepPeriods, &end);
+                    y = end;
+                } catch (const NumericalFailure&) {
+                    break;  // the rest of this sweep has no state to start from
+                }
+                c.record.twinRollAmplitudeDeg = describe(*c.x, v).rollAmplitudeDeg;
+                sweeps[dir].push_back(std::move(c));
+            }
+        });
+        std::vector<Candidate> all;
+        for (auto& sw : sweeps) all.insert(all.end(), sw.begin(), sw.end());
+        parallelFor(all.size(), 0, [&](size_t i) { all[i].x = solve(all[i].record.speedMph, *all[i].x); });
+        for (Candidate& c : all) {
+            ++set.sweepStartsTried;
+            c.record.solved = c.x.has_value();
+            if (c.x) c.record.solvedRollAmplitudeDeg = describe(*c.x, c.record.speedMph).rollAmplitudeDeg;
+            if (c.x && !isKnown(*c.x, c.record.speedMph)) {
+                ++set.sweepStartsNew;
+                c.record.newPath = true;
+                set.paths.push_back(makePath(*c.x, c.record.speedMph, 0,
+                                             fmt::format("twin {} sweep at {:g} mph", c.record.direction,
+                                                         c.record.speedMph)));
+            }
+            set.sweepStarts.push_back(c.record);
+        }
     }
-    auto applyFloquet = [this](SteadyStatePoint& p) {
+    for (size_t k = 0; k < set.paths.size(); ++k)
+        for (auto& p : set.paths[k].points) p.path = int(k);
+
+    // Stability.
+    auto check = [this, &s](SteadyStatePoint& p) {
+        p.checked = true;
+        std::optional<bool> floquetStable, stays;
         try {
             const TwinFloquet f = calcTwinFloquet(p.harmonics, p.speedMph);
             p.maxFloquetMultiplier = f.maxMultiplier;
+            p.dominantMultiplier = f.dominant;
             p.floquetConverged = f.converged;
             // A sticking wedge contributes μ = 1 exactly; the finite-difference
             // monodromy puts a few percent of noise on it (1.00–1.05 seen).
-            p.stability = f.maxMultiplier < 1.1 ? Stability::Stable : Stability::Unstable;
-            p.stabilityEvidence = "floquet";
+            if (f.converged) floquetStable = f.maxMultiplier < 1.1;
         } catch (const NumericalFailure&) {
             p.floquetConverged = false;
         }
-        if (!p.floquetConverged) {
-            // No periodic orbit of the twin found near the harmonic solution: does
-            // the twin, started on it, stay there for 10 periods?
-            try {
-                p.twinPersistence = calcTwinPersistence(p.harmonics, p.speedMph, 10);
-                // The describing function itself is ~10 % off near resonance (0.68° against
-                // the twin's 0.76° at 15.7 mph); a drift beyond 15 % in 10 periods is not staying.
-                p.stability = std::abs(p.twinPersistence - 1) < 0.15 ? Stability::Stable : Stability::Unstable;
-                p.stabilityEvidence = "persistence";
-            } catch (const NumericalFailure&) {
-                p.stabilityEvidence = "none";
-                p.stability = Stability::NotComputed;
-            }
+        try {
+            p.twinPersistence = calcTwinPersistence(p.harmonics, p.speedMph, s.persistencePeriods);
+            stays = std::abs(p.twinPersistence - 1) <= kPersistenceTolerance;
+        } catch (const NumericalFailure&) {
+        }
+        if (!stays) {
+            p.stabilityEvidence = "none";
+            p.stability = Stability::NotComputed;
+        } else if (floquetStable && *floquetStable != *stays) {
+            p.stabilityEvidence = "floquet, persistence disagree";
+            p.stability = Stability::NotComputed;
+        } else {
+            p.stabilityEvidence = floquetStable ? "floquet+persistence" : "persistence";
+            p.stability = *stays ? Stability::Stable : Stability::Unstable;
         }
     };
-    // Nested in a parallel job (validate), the enclosing pool's threads; else one per core.
-    auto runParallel = [](size_t count, const std::function<void(size_t)>& job) { parallelFor(count, 0, job); };
+    std::vector<SteadyStatePoint*> all;
+    for (auto& path : set.paths)
+        for (auto& p : path.points) all.push_back(&p);
     if (s.stability == StabilityMethod::Floquet) {
-        runParallel(points.size(), [&](size_t i) { applyFloquet(points[i]); });
-    } else if (s.stability == StabilityMethod::FoldRule && !points.empty()) {
-        // Stability can change only at bifurcations; along a traced path the
-        // generic ones are the folds. Each stretch between folds is checked by
-        // Floquet (twin orbit) at its middle point and marked as a whole; where
-        // the shooting does not converge, stability flips from the stretch before.
-        const int stretches = points.back().foldsBefore + 1;
-        std::vector<size_t> probe(stretches);
-        for (int k = 0; k < stretches; ++k) {
-            std::vector<size_t> members;
-            for (size_t i = 0; i < points.size(); ++i)
-                if (points[i].foldsBefore == k) members.push_back(i);
-            probe[k] = members[members.size() / 2];
-        }
-        runParallel(probe.size(), [&](size_t k) { applyFloquet(points[probe[k]]); });
-        // Without evidence and without a decided stretch before it to flip from,
-        // a stretch stays not computed (it used to be assumed stable).
-        std::vector<Stability> stable(stretches, Stability::NotComputed);
-        auto flip = [](Stability x) {
-            return x == Stability::Stable     ? Stability::Unstable
-                   : x == Stability::Unstable ? Stability::Stable
-                                              : Stability::NotComputed;
+        parallelFor(all.size(), 0, [&](size_t i) { check(*all[i]); });
+    } else if (s.stability == StabilityMethod::FoldRule) {
+        // Each stretch between folds: checks near both ends (a tenth in from the fold,
+        // where one multiplier is +1) and in the middle; a pair of neighbouring checks
+        // that disagree is bisected until they are neighbouring points or the stretch
+        // has used its checks. Every point then takes its nearest check's label.
+        struct Stretch {
+            std::vector<SteadyStatePoint>* points;
+            size_t first, last;
+            std::set<size_t> checks;
         };
-        for (int k = 0; k < stretches; ++k) {
-            const SteadyStatePoint& p = points[probe[k]];
-            stable[k] = p.stabilityEvidence != "none" ? p.stability
-                        : k == 0                     ? Stability::NotComputed
-                                                     : flip(stable[k - 1]);
+        std::vector<Stretch> stretches;
+        for (auto& path : set.paths)
+            for (size_t i = 0; i < path.points.size();) {
+                size_t j = i;
+                while (j + 1 < path.points.size() && path.points[j + 1].foldsBefore == path.points[i].foldsBefore) ++j;
+                const size_t inset = (j - i + 5) / 10;
+                stretches.push_back({&path.points, i, j, {i + inset, (i + j) / 2, j - inset}});
+                i = j + 1;
+            }
+        std::vector<std::pair<size_t, size_t>> pending;  // (stretch, point)
+        for (size_t k = 0; k < stretches.size(); ++k)
+            for (size_t i : stretches[k].checks) pending.push_back({k, i});
+        while (!pending.empty()) {
+            parallelFor(pending.size(), 0, [&](size_t m) { check((*stretches[pending[m].first].points)[pending[m].second]); });
+            pending.clear();
+            for (size_t k = 0; k < stretches.size(); ++k) {
+                Stretch& st = stretches[k];
+                std::vector<size_t> c(st.checks.begin(), st.checks.end());
+                for (size_t m = 0; m + 1 < c.size() && int(st.checks.size()) < s.maxChecksPerStretch; ++m)
+                    if ((*st.points)[c[m]].stability != (*st.points)[c[m + 1]].stability && c[m + 1] - c[m] > 1) {
+                        const size_t mid = (c[m] + c[m + 1]) / 2;
+                        st.checks.insert(mid);
+                        pending.push_back({k, mid});
+                    }
+            }
         }
-        for (auto& p : points) p.stability = stable[p.foldsBefore];
+        for (const Stretch& st : stretches) {
+            const std::vector<size_t> c(st.checks.begin(), st.checks.end());
+            for (size_t i = st.first; i <= st.last; ++i) {
+                SteadyStatePoint& p = (*st.points)[i];
+                if (p.checked) continue;
+                size_t nearest = c.front();
+                for (size_t k : c)
+                    if ((k > i ? k - i : i - k) < (nearest > i ? nearest - i : i - nearest)) nearest = k;
+                p.stability = (*st.points)[nearest].stability;
+                p.stabilityEvidence = "interpolated";
+            }
+            for (size_t m = 0; m + 1 < c.size(); ++m) {
+                const SteadyStatePoint &a = (*st.points)[c[m]], &b = (*st.points)[c[m + 1]];
+                if (a.stability == b.stability || a.stability == Stability::NotComputed ||
+                    b.stability == Stability::NotComputed)
+                    continue;
+                const SteadyStatePoint& unstable = a.stability == Stability::Unstable ? a : b;
+                const std::complex<double> mu = unstable.dominantMultiplier;
+                const std::string kind = !unstable.floquetConverged || !std::isfinite(mu.real()) ? "not classified"
+                                         : std::abs(mu.imag()) > 1e-3 * std::abs(mu)          ? "complex pair"
+                                         : mu.real() > 0 ? "real multiplier through +1"
+                                                         : "period doubling (-1)";
+                set.changes.push_back({a.path, a.speedMph, b.speedMph, kind});
+            }
+        }
     }
-    std::vector<SteadyStateBranch> branches;
-    for (const auto& p : points) {
-        if (branches.empty() || branches.back().stability != p.stability) branches.push_back({p.stability, {}});
-        branches.back().points.push_back(p);
+
+    // Peak values from the twin's time history: at each path's ends, each checked point,
+    // and every point twinSpacingMph or 5 % of roll amplitude on from the last one run.
+    if (s.twinPeriods > 0) {
+        std::vector<SteadyStatePoint*> run;
+        for (auto& path : set.paths) {
+            const SteadyStatePoint* last = nullptr;
+            for (size_t i = 0; i < path.points.size(); ++i) {
+                SteadyStatePoint& p = path.points[i];
+                if (!last || p.checked || i + 1 == path.points.size() ||
+                    std::abs(p.speedMph - last->speedMph) >= s.twinSpacingMph ||
+                    std::abs(p.rollAmplitudeDeg - last->rollAmplitudeDeg) >= 0.05 * last->rollAmplitudeDeg) {
+                    run.push_back(&p);
+                    last = &p;
+                }
+            }
+        }
+        parallelFor(run.size(), 0, [&](size_t i) {
+            run[i]->twin = calcTwinMaxima(run[i]->harmonics, run[i]->speedMph, s.twinPeriods);
+        });
     }
-    return branches;
+
+    for (const auto& path : set.paths)
+        for (const auto& p : path.points) {
+            auto& b = set.branches;
+            if (b.empty() || b.back().path != p.path || b.back().stability != p.stability)
+                b.push_back({p.stability, p.path, {}});
+            b.back().points.push_back(p);
+        }
+    return set;
 }
 
 }  // namespace rockroll

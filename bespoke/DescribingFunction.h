@@ -21,6 +21,8 @@
 #include "bespoke/HarmonicForce.h"
 
 #include <Eigen/Dense>
+#include <complex>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -35,41 +37,99 @@ enum class Stability { Stable, Unstable, NotComputed };
 /// "yes" | "no" | "not computed" (CSV cells and text tables).
 const char* toString(Stability s);
 
+/// A force's mean and the amplitudes of its first two harmonics [lb]: what harmonic
+/// balance determines (report eq. 23), exact for the two-harmonic motion
+/// (HarmonicForce.h). Never a peak.
+struct ForceHarmonics {
+    double meanLb = 0;
+    double firstLb = 0;   ///< |H₁| = √(a₁² + b₁²)
+    double secondLb = 0;  ///< |H₂|
+};
+
+/// The time-domain twin started on a harmonic solution and run `periods` forcing
+/// periods: the 20 Hz filtered maxima over its last period (summarizeRun's steady
+/// part with one cycle), the way the other models' steady maxima are taken. These,
+/// not the two-harmonic series, are the describing function's peak forces.
+struct TwinMaxima {
+    bool computed = false;          ///< false: not run (periods 0) or the twin's integration failed
+    int periods = 0;
+    double rollAmplitudeDeg = 0;    ///< half peak-to-peak over the last period
+    double persistence = 0;         ///< rollAmplitudeDeg / the harmonic solution's
+    double maxRollDeg = 0;
+    double maxTruckSideWheelLoadLb = 0;
+    double maxSideBearingLoadLb = 0;
+    double maxCenterPlateLoadLb = 0;
+    /// The twin stayed on the solution: |persistence − 1| ≤ kPersistenceTolerance.
+    bool stayed() const;
+};
+
+/// Relative roll-amplitude change within which the twin counts as staying on a
+/// harmonic solution (the describing function itself is ~10 % off the twin's orbit
+/// near resonance: docs/bespoke.md, "Stability").
+inline constexpr double kPersistenceTolerance = 0.15;
+
 struct SteadyStatePoint {
     double speedMph = 0;
-    double rollAmplitudeDeg = 0;      ///< half peak-to-peak of car-body roll
-    double wheelLiftFraction = 0;     ///< fraction of the period with a wheel off its rail
-    double maxWheelLoadLb = 0;        ///< equivalent wheelset wheel = two wheels, one truck side
-    double maxSideBearingLoadLb = 0;
-    double minCenterPlateLoadLb = 0;
+    double rollAmplitudeDeg = 0;      ///< half peak-to-peak of car-body roll (two-harmonic series)
+    double rollMeanDeg = 0, rollFirstDeg = 0, rollSecondDeg = 0;  ///< roll's mean, |1st|, |2nd| harmonic
+    /// Fraction of the period in which a wheel's two-harmonic displacement is off its
+    /// rail (a property of the motion, not of a force peak).
+    double wheelLiftFraction = 0;
+    ForceHarmonics wheelLoad;         ///< one truck side's two wheels; the side with the larger |1st|
+    ForceHarmonics sideBearingLoad;   ///< the side with the larger |1st|
+    ForceHarmonics centerPlateLoad;   ///< both rim contacts together
+    TwinMaxima twin;                  ///< peak values, from the twin's time history
+    std::complex<double> dominantMultiplier{std::numeric_limits<double>::quiet_NaN(), 0.0};
     double maxFloquetMultiplier = 0;  ///< |μ|max on the twin's orbit; < 1 is stable (NaN when not computed)
     bool floquetConverged = false;    ///< the shooting found the twin's periodic orbit
-    double twinPersistence = 0;       ///< twin's roll amplitude after 10 periods / this point's (NaN if not run)
-    std::string stabilityEvidence = "none";  ///< floquet | persistence | none (fold rule)
+    double twinPersistence = 0;       ///< twin's roll amplitude after the persistence run / this point's (NaN if not run)
+    /// floquet+persistence | persistence | floquet, persistence disagree | none | interpolated
+    std::string stabilityEvidence = "none";
+    bool checked = false;             ///< this point's own stability was checked (not taken from a neighbour)
     int foldsBefore = 0;              ///< folds passed along the path before this point
+    int path = 0;                     ///< the continuation path (SteadyStatePath) it lies on
     Stability stability = Stability::NotComputed;
     Eigen::VectorXd harmonics;        ///< scaled unknowns (mm, mrad)
 };
 
-struct SteadyStateBranch {
-    Stability stability = Stability::NotComputed;
+/// Where stability changes along a path between two checked points without a fold
+/// between them, and what the multipliers say it is.
+struct StabilityChange {
+    int path = 0;
+    double fromMph = 0, toMph = 0;  ///< the two checked points it lies between
+    std::string kind;               ///< "real multiplier through +1" | "period doubling (-1)" | "complex pair" | "not classified"
+};
+
+/// One continuation: a connected piece of the solution set, with how it was found.
+struct SteadyStatePath {
+    std::string start;              ///< e.g. "rest at 10 mph", "twin down sweep at 18 mph"
+    double startMph = 0;
+    bool closed = false;            ///< the path came back to its start (an isola)
     std::vector<SteadyStatePoint> points;
 };
 
-/// How each point's stability is decided (docs/bespoke.md):
-///   FoldRule: the path is cut at its folds; each stretch is marked by Floquet on the twin
-///             at its middle point (flipping from the stretch before where shooting fails);
-///   Floquet:  every point by Floquet on the twin (slow: a shooting per point);
+struct SteadyStateBranch {
+    Stability stability = Stability::NotComputed;
+    int path = 0;                   ///< the path it is a stretch of
+    std::vector<SteadyStatePoint> points;
+};
+
+/// How each point's stability is decided (docs/bespoke.md, "Stability"):
+///   FoldRule: each stretch of a path between folds is checked near both ends and in
+///             the middle (Floquet on the twin's orbit and a persistence run of the twin);
+///             where checks disagree the stretch is bisected, and each point takes the
+///             label of its nearest check;
+///   Floquet:  every point checked (slow);
 ///   None:     not decided (every point Stability::NotComputed, multipliers NaN).
-/// A point whose evidence fails (no twin orbit, twin integration fails) is
-/// NotComputed too, and so is a FoldRule stretch without evidence that has no
-/// decided stretch before it to flip from.
+/// A check whose Floquet and persistence evidence disagree labels nothing
+/// (Stability::NotComputed): a label always agrees with its persistence run.
 enum class StabilityMethod { FoldRule, Floquet, None };
 
 struct TwinFloquet {
     bool converged = false;    ///< shooting reached a periodic orbit of the twin
     double mismatch = 0;       ///< |φ_T(y) − y| in units of the perturbation steps
     double maxMultiplier = 0;  ///< |μ|max of the monodromy matrix there
+    std::complex<double> dominant{0, 0};  ///< the multiplier of largest modulus
     double rollAmplitudeDeg = 0;
 };
 
@@ -77,8 +137,39 @@ struct ContinuationSettings {
     double fromMph = 10, toMph = 22;
     double initialStep = 0.2;  ///< arclength in (mph, mm, mrad) units
     double minStep = 1e-3, maxStep = 1.0;
-    int maxPoints = 600;
+    int maxPoints = 600;       ///< per path
     StabilityMethod stability = StabilityMethod::FoldRule;
+    int persistencePeriods = 20;  ///< the persistence run of a stability check
+    int maxChecksPerStretch = 9;  ///< the fold rule's checks, bisection included
+    /// Starts besides the two ends of the range: the twin swept down and up in
+    /// speed (each speed `sweepPeriods` forcing periods, the state carried over),
+    /// its last period projected onto two harmonics and solved; 0 = no sweep starts.
+    double sweepStepMph = 1.0;
+    int sweepPeriods = 12;
+    int twinPeriods = 5;          ///< the twin maxima's run; 0 = not computed
+    /// The twin maxima are run at each path's ends, at each checked point and wherever
+    /// the speed has moved this far (or the roll amplitude 5 %) from the last one run.
+    double twinSpacingMph = 0.25;
+};
+
+/// One speed of the twin's own sweeps (ContinuationSettings::sweepStepMph) and what
+/// harmonic balance made of it.
+struct TwinSweepStart {
+    double speedMph = 0;
+    std::string direction;            ///< "down" | "up"
+    double twinRollAmplitudeDeg = 0;  ///< the twin's last period, its first two harmonics
+    bool solved = false;              ///< Powell converged from it
+    double solvedRollAmplitudeDeg = 0;
+    bool newPath = false;             ///< it started a path of its own
+};
+
+/// Everything trace() finds.
+struct SteadyStateSet {
+    std::vector<SteadyStatePath> paths;
+    std::vector<SteadyStateBranch> branches;  ///< the paths cut where stability changes
+    std::vector<StabilityChange> changes;
+    std::vector<TwinSweepStart> sweepStarts;
+    int sweepStartsTried = 0, sweepStartsNew = 0;
 };
 
 class DescribingFunctionModel {
@@ -105,10 +196,18 @@ public:
     std::optional<Eigen::VectorXd> solve(double speedMph, const Eigen::VectorXd& guess) const;
     /// solve() from the static state, through a homotopy in wedge friction.
     std::optional<Eigen::VectorXd> solveFromRest(double speedMph) const;
-    /// Pseudo-arclength continuation from the solution at settings.fromMph.
-    std::vector<SteadyStateBranch> trace(const ContinuationSettings& settings) const;
+    /// The solution set over [fromMph, toMph]: pseudo-arclength continuation from the
+    /// solutions at both ends of the range and from the twin's swept steady states,
+    /// each new one a path of its own; then stability and the twin maxima.
+    SteadyStateSet trace(const ContinuationSettings& settings) const;
 
+    /// The harmonics, force harmonics and the two-harmonic roll amplitude of a solution.
     SteadyStatePoint describe(const Eigen::VectorXd& x, double speedMph) const;
+    /// The twin run `periods` periods from the solution (TwinMaxima).
+    TwinMaxima calcTwinMaxima(const Eigen::VectorXd& x, double speedMph, int periods) const;
+    /// The twin's state over its last period projected on the ansatz (a guess for solve()).
+    Eigen::VectorXd projectTwinState(const EomHalfCarModel::State& y, double speedMph, int periods,
+                                     EomHalfCarModel::State* end = nullptr) const;
     /// Floquet multipliers of the time-domain twin: shooting (Newton on the
     /// one-period flow map, finite-difference monodromy) from the harmonic
     /// solution's state to the twin's periodic orbit, then |μ|max there.

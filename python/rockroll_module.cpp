@@ -279,13 +279,15 @@ PYBIND11_MODULE(_rockroll, m) {
     m.def(
         "_steady",
         [](Scenario sc, std::optional<double> amplitudeIn, double fromMph, double toMph, const std::string& stability,
-           const std::string& command) {
+           int twinPeriods, bool sweepStarts, const std::string& command) {
             app::SteadyOptions o;  // the options of `rockroll steady`
             o.scenario = sc.source;
             o.amplitudeIn = amplitudeIn;
             o.fromMph = fromMph;
             o.toMph = toMph;
             o.stabilityMethod = stability;
+            o.twinPeriods = twinPeriods;
+            o.sweepStarts = sweepStarts;
             if (o.amplitudeIn) sc.track.amplitude = *o.amplitudeIn * units::inch;
             app::SteadyResult r;
             {
@@ -295,7 +297,7 @@ PYBIND11_MODULE(_rockroll, m) {
             return toPython(app::makeSteadyJson(r, sc, o, command));
         },
         py::arg("scenario"), py::arg("amplitude_in"), py::arg("from_mph"), py::arg("to_mph"), py::arg("stability"),
-        py::arg("command"));
+        py::arg("twin_periods"), py::arg("sweep_starts"), py::arg("command"));
 
     m.def(
         "_modes",

@@ -115,9 +115,12 @@ TEST(TruckStatics, EquationsOfMotionHalfCarAndDescribingFunctionCarryTheStaticLo
         // with no input, give the same constant loads.
         const DescribingFunctionModel df(car, 0.0, 39 * units::foot);
         const SteadyStatePoint p = df.describe(df.makeStaticGuess(), 15);
-        expectRel(p.maxWheelLoadLb * units::lbf, t.getTruckSideWheelLoad(), name);
-        expectRel(p.minCenterPlateLoadLb * units::lbf, t.getCenterPlateLoad(), name);
-        EXPECT_EQ(p.maxSideBearingLoadLb, 0.0) << name;
+        expectRel(p.wheelLoad.meanLb * units::lbf, t.getTruckSideWheelLoad(), name);
+        expectRel(p.centerPlateLoad.meanLb * units::lbf, t.getCenterPlateLoad(), name);
+        EXPECT_EQ(p.sideBearingLoad.meanLb, 0.0) << name;
+        // No input, no harmonics.
+        EXPECT_LT(p.wheelLoad.firstLb + p.wheelLoad.secondLb, 1e-6 * p.wheelLoad.meanLb) << name;
+        EXPECT_LT(p.centerPlateLoad.firstLb + p.centerPlateLoad.secondLb, 1e-6 * p.centerPlateLoad.meanLb) << name;
     }
 }
 

@@ -198,16 +198,24 @@ def sweep(scenarios, from_mph, to_mph, step_mph, model=None, amplitude_in=None, 
                             command)
 
 
-def steady(scenario, from_mph=10, to_mph=22, amplitude_in=None, stability="fold"):
+def steady(scenario, from_mph=10, to_mph=22, amplitude_in=None, stability="fold", twin_periods=5,
+           sweep_starts=True):
     """The describing-function steady state against speed, like `rockroll steady --json`:
-    a dict with the input and ``branches`` (each with ``stability`` and ``points``).
-    ``stability``: "fold" (one Floquet check per stretch between folds), "floquet"
-    (every point, slow) or "none"."""
+    a dict with the input, ``paths`` (each continuation and how it was started),
+    ``stability_changes`` and ``branches`` (each with ``path``, ``stability`` and
+    ``points``). ``stability``: "fold" (checks near both ends and in the middle of each
+    stretch between folds), "floquet" (every point, slow) or "none". ``twin_periods``:
+    the time-domain twin's run per point for its 20 Hz filtered maxima (0: none).
+    ``sweep_starts``: also start paths from the twin's swept steady states."""
     sc = _scenario(scenario)
     _choice("stability", stability, ("fold", "floquet", "none"))
-    command = _call("steady", sc, from_mph=from_mph, to_mph=to_mph, amplitude_in=amplitude_in, stability=stability)
+    if isinstance(twin_periods, bool) or not isinstance(twin_periods, int) or not 0 <= twin_periods <= 100:
+        raise ValueError(f"twin_periods = {twin_periods!r}: expected an integer in [0, 100]")
+    command = _call("steady", sc, from_mph=from_mph, to_mph=to_mph, amplitude_in=amplitude_in, stability=stability,
+                    twin_periods=twin_periods, sweep_starts=sweep_starts)
     return _rockroll._steady(sc, None if amplitude_in is None else _positive("amplitude_in", amplitude_in),
-                             _positive("from_mph", from_mph), _positive("to_mph", to_mph), stability, command)
+                             _positive("from_mph", from_mph), _positive("to_mph", to_mph), stability,
+                             int(twin_periods), bool(sweep_starts), command)
 
 
 def modes(scenario, model=None):
