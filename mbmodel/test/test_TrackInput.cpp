@@ -174,7 +174,7 @@ TEST(TrackInput, CsvErrorsNameLineAndColumn) {
     }
 }
 
-// Input size limits (README.md, "Input size limits"): a table of kMaxTrackRows rows reads,
+// Input size limits (docs/cli.md, "Input size limits"): a table of kMaxTrackRows rows reads,
 // one more row is refused naming its line; text over kMaxTrackFileBytes is refused unread.
 TEST(TrackInput, TablesOverTheSizeLimitsAreRefused) {
     std::string csv = "distance [m], left [m], right [m]\n";
