@@ -1,5 +1,6 @@
 #pragma once
-// Track vertical input: rail-top heights against track position (brief §5).
+// Track vertical input: rail-top heights against track position (report §2.2,
+// eqs 1–2; docs/model.md §3).
 //
 // Staggered rectified sine (report eqs 1–2), started at the phase where both
 // rails are equal so the rails are continuous (only their slope kinks):

@@ -300,7 +300,7 @@ CarParameters readCarFile(const toml::table& root, const std::string& src) {
         const double value = item.getQuantity("value", info.dimension);
         checkCarValue(item, "value", info, value, *entry->get("value"));
         if (item.getText("source", "").empty())
-            item.fail("source", "(missing)", "where the value comes from (report table, brief, assumed), a string");
+            item.fail("source", "(missing)", "where the value comes from (report table, derived, assumed), a string");
         item.rejectUnknown();
         car.*(info.member) = value;
     }

@@ -81,7 +81,7 @@ TEST(TrackInput, MeasuredTableIsInterpolated) {
     EXPECT_THROW(TrackInput{t}, std::invalid_argument);
 }
 
-// ---- measured track: tapers, repeat, and the CSV reader (issue 13 item 4) ----
+// ---- measured track: tapers, repeat, and the CSV reader (docs/cli.md, "Measured track") ----
 
 namespace {
 /// What readTrackCsv throws for `csv`, or "".

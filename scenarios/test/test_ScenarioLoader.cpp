@@ -87,7 +87,7 @@ TEST(ScenarioLoader, CommandLineRejectsABadScenarioWithNonZeroExit) {
     EXPECT_NE(msg.find("parsecs"), std::string::npos) << msg;
 }
 
-// Issue 12: one declared range per value, NaN and infinity refused everywhere, integers
+// One declared range per value (docs/cli.md, "Accepted ranges"), NaN and infinity refused everywhere, integers
 // that do not wrap, and the file's line in every message.
 TEST(ScenarioLoader, RangesRefuseNonFiniteOutOfRangeAndWrappedValues) {
     using test_cases::replaceOnce;
