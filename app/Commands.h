@@ -6,7 +6,7 @@
 
 namespace rockroll::app {
 
-/// Exit codes (documented in --help and README.md).
+/// Exit codes (documented in --help and docs/cli.md, "Exit codes").
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitNumericalFailure = 3;

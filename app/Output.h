@@ -19,7 +19,7 @@
 namespace rockroll::app {
 
 /// An output that cannot be written (a path under a file, no permission, a full disk):
-/// exit 2 at the command line (README, Exit codes), its message naming the path.
+/// exit 2 at the command line (docs/cli.md, "Exit codes"), its message naming the path.
 class OutputError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;

@@ -484,7 +484,7 @@ Json makeFlatSummary(Json summary) {
     return r;
 }
 
-/// The sweep-level fields of a study of kind "sweep" (README "Parameter studies").
+/// The sweep-level fields of a study of kind "sweep" (docs/studies.md, "Output").
 Json summarizeSweeps(const std::vector<std::vector<SweepPoint>>& sweeps, std::string& status) {
     size_t speeds = 0, failed = 0, severe = 0, criteriaFailed = 0;
     const SweepPoint* maxRoll = nullptr;

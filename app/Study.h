@@ -1,5 +1,5 @@
 #pragma once
-// Parameter studies (rockroll study, rockroll merge; README "Parameter studies"): a
+// Parameter studies (rockroll study, rockroll merge; docs/studies.md): a
 // study file names a base scenario, a model, a kind (run or sweep) and a [vary] table
 // of scenario keys to values; its points are numbered deterministically from 0 and
 // may be split into shards (point i in shard K of N when i mod N = K − 1) that merge

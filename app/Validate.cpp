@@ -75,7 +75,7 @@ int validateCommand(const ValidateOptions& o) {
     const std::string commit = getCommit();
     std::string md;
     // Each phase's wall and CPU minutes go to stderr, validation.json and the header, so a
-    // slow validate shows where its time went (bench/README.md, "validate").
+    // slow validate shows where its time went (bench/README.md, "rockroll validate").
     std::vector<std::pair<std::string, PhaseTime>> phases;
     auto wallMinutes = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60; };
     auto cpuMinutes = [] { return double(std::clock()) / CLOCKS_PER_SEC / 60; };

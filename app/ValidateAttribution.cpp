@@ -1,5 +1,5 @@
 // validate: "Attribution: why the Simbody half car and the reduced model disagree"
-// (issue 9, item 6). One factor changed at a time on the 70-ton loaded car at
+// (results/REPORT.md section 10; docs/validation.md). One factor changed at a time on the 70-ton loaded car at
 // 0.75 in; every sentence of the explanation is generated from the measured values.
 #include "app/ValidateSections.h"
 #include "scenarios/SpeedSweep.h"

@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
     addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
     sweepCmd->add_flag("--resume", sweep.resume,
-                       "continue the interrupted sweep whose journal is in --out DIR.partial (README \"Output directories\")");
+                       "continue the interrupted sweep whose journal is in --out DIR.partial (docs/outputs.md, \"Journals and resume\")");
 
     app::ModesOptions modes;
     CLI::App* modesCmd = cli.add_subcommand(
@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
     app::StudyOptions study;
     CLI::App* studyCmd = cli.add_subcommand(
         "study", "a parameter study: the points of a study file's [vary] table, sharded and resumable "
-                 "(README \"Parameter studies\")");
+                 "(docs/studies.md)");
     studyCmd->add_option("study", study.study, "study file (TOML)")->required()->check(CLI::ExistingFile);
     studyCmd->add_option("--out", study.outDir, "write study.csv and study.json into this directory")->required();
     studyCmd->add_option("--shard", study.shard, "K/N: run the points i with i mod N = K-1 (merge the shards with "

@@ -1,4 +1,4 @@
-// Accuracy against cost (issue 10, item 4): integrator method and accuracy against
+// Accuracy against cost (bench/README.md, "Accuracy against cost"): integrator method and accuracy against
 // wall time and against the change in the summary's headline results, on three cases:
 //   light    70-ton loaded, 0.75 in, 12 mph, half car
 //   severe   70-ton loaded, 0.75 in, 16.5 mph, half car (the default case)

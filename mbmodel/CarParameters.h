@@ -1,7 +1,8 @@
 #pragma once
 // Parameters of one freight car, SI, and the table of their keys, dimensions and
 // display units (getCarParameterTable()). The values of each car, with their
-// sources (report Table 2, brief §4, assumed), are data: scenarios/cars/*.toml.
+// sources (report Table 2, derived from its Table 1, or assumed; docs/model.md §5),
+// are data: scenarios/cars/*.toml.
 #include "mbmodel/Units.h"
 
 #include <string_view>
@@ -36,7 +37,7 @@ struct CarParameters {
     double wheelbase = 0;               ///< [m]
     double truckSpacing = 0;            ///< truck centers [m]
     double gauge = 0;                   ///< [m]
-    // --- brief §4: not in the report ---------------------------------------------
+    // --- not in the report: derived from its Table 1 or assumed (docs/model.md §5) ---
     double bolsterWeight = 0;           ///< [N]
     double bolsterRollInertia = 0;      ///< [kg·m²]
     double sideFrameWeight = 0;         ///< each [N], lumped with the wheelsets

@@ -19,7 +19,7 @@ namespace rockroll {
 std::vector<std::filesystem::path> getDataDirs();
 
 /// A shipped data file that is missing or cannot be read (the install, ROCKROLL_DATA_DIR,
-/// ROCKROLL_MIT1976): bad input, exit 2 at the command line (README, Exit codes).
+/// ROCKROLL_MIT1976): bad input, exit 2 at the command line (docs/cli.md, "Exit codes").
 class DataFileError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;

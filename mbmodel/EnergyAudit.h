@@ -1,5 +1,5 @@
 #pragma once
-// Energy audit of a recorded run (issue 9, item 4). No Simbody dependency.
+// Energy audit of a recorded run (docs/model.md, "Energy audit"). No Simbody dependency.
 //
 // Every time-domain model records three cumulative channels (ChannelLayout):
 //   energy_stored_J      E(t): kinetic + gravity + elastic energy of every element

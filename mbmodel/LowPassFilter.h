@@ -1,6 +1,6 @@
 #pragma once
 // Zero-phase low-pass filter for force channels before their maxima are taken
-// (brief §7): a 2nd-order Butterworth section (bilinear transform with
+// (docs/model.md §6, "Outputs"): a 2nd-order Butterworth section (bilinear transform with
 // pre-warping) run forward then backward, so the result has no phase lag and a
 // 4th-order magnitude roll-off with −6 dB at the cut-off.
 #include <string>

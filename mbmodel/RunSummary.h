@@ -1,5 +1,5 @@
 #pragma once
-// Headline numbers of one run (brief §7), shared by every model.
+// Headline numbers of one run (docs/model.md §6, "Outputs"), shared by every model.
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
 
@@ -10,7 +10,7 @@
 namespace rockroll {
 
 /// Limits of the freight acceptance criteria (scenario table [criteria]). The
-/// defaults are the brief's twist-and-roll limits (peak-to-peak roll 6°, no
+/// defaults are commonly applied twist-and-roll limits (peak-to-peak roll 6°, no
 /// wheel below 10 % of its static load) and assumed values for L/V and the
 /// car-body accelerations (docs/model.md "Criteria"): set them from the standard
 /// the car is accepted under.
@@ -135,7 +135,7 @@ struct Durations {
 };
 Durations calcDurations(const std::vector<bool>& on, double dt);
 
-/// The report's regimes (its §1; brief §7) from durations: severe when a center
+/// The report's regimes (its §1; docs/model.md, "Regimes") from durations: severe when a center
 /// plate stays fully unloaded (load ≤ 0) for at least severeSeparationTime;
 /// moderate when a side bearing carries load; light otherwise.
 std::string classifyRegime(double centerPlateSeparationLongest, bool sideBearingContact, double severeSeparationTime);

@@ -145,7 +145,7 @@ std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::
                                            c + 1, headers[c], cells[c], rowLines.back()));
         }
         if (rows.size() == kMaxTrackRows)
-            throw fail(lineNo, fmt::format("more than {} data rows; expected at most {} (README.md, \"Input size "
+            throw fail(lineNo, fmt::format("more than {} data rows; expected at most {} (docs/cli.md, \"Input size "
                                            "limits\")",
                                            kMaxTrackRows, kMaxTrackRows));
         MeasuredTrackSample m;

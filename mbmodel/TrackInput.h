@@ -1,5 +1,6 @@
 #pragma once
-// Track vertical input: rail-top heights against track position (brief §5).
+// Track vertical input: rail-top heights against track position (report §2.2,
+// eqs 1–2; docs/model.md §3).
 //
 // Staggered rectified sine (report eqs 1–2), started at the phase where both
 // rails are equal so the rails are continuous (only their slope kinks):
@@ -56,7 +57,7 @@ inline constexpr const char* kDefaultTaperText = "20 ft";
 /// its taper starts at 0). std::invalid_argument naming the line and column otherwise,
 /// or when alignment is not zero (the models take vertical rail input only), or when the
 /// text is larger than kMaxTrackFileBytes or has more than kMaxTrackRows data rows.
-/// Input size limits of a measured track (README.md, "Input size limits"): its CSV's bytes
+/// Input size limits of a measured track (docs/cli.md, "Input size limits"): its CSV's bytes
 /// and its data rows; readTrackCsv refuses more. 100,000 rows (19 miles at 1 ft spacing) keep
 /// a run's summary.json, whose provenance carries every row for --from-summary, under the
 /// 16 MiB a summary file may have (measured: 9.5 MB, 8 s and 120 MB to run; 1,000,000 rows

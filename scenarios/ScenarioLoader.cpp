@@ -300,7 +300,7 @@ CarParameters readCarFile(const toml::table& root, const std::string& src) {
         const double value = item.getQuantity("value", info.dimension);
         checkCarValue(item, "value", info, value, *entry->get("value"));
         if (item.getText("source", "").empty())
-            item.fail("source", "(missing)", "where the value comes from (report table, brief, assumed), a string");
+            item.fail("source", "(missing)", "where the value comes from (report table, derived, assumed), a string");
         item.rejectUnknown();
         car.*(info.member) = value;
     }
@@ -401,7 +401,7 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
             track.fail("measured", TableReader::describe(*m), "an array of tables [[track.measured]]");
         if (arr->size() > kMaxTrackRows)
             track.fail("measured", fmt::format("{} rows", arr->size()),
-                       fmt::format("at most {} rows [[track.measured]] (README.md, \"Input size limits\")",
+                       fmt::format("at most {} rows [[track.measured]] (docs/cli.md, \"Input size limits\")",
                                    kMaxTrackRows));
         for (size_t i = 0; i < arr->size(); ++i) {
             TableReader row(arr->get(i)->as_table(), src, fmt::format("track.measured[{}].", i));
@@ -695,7 +695,7 @@ std::string readInputFile(const std::string& path, const char* what, std::uintma
         throw ScenarioError(fmt::format("{}: cannot open {}: not a regular file", path, what));
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (!ec && size > maxBytes)
-        throw ScenarioError(fmt::format("{}: the {} is {} bytes; expected at most {} bytes ({} MiB, README.md, "
+        throw ScenarioError(fmt::format("{}: the {} is {} bytes; expected at most {} bytes ({} MiB, docs/cli.md, "
                                         "\"Input size limits\")",
                                         path, what, size, maxBytes, maxBytes >> 20));
     std::ifstream in(path, std::ios::binary);
@@ -706,7 +706,7 @@ std::string readInputFile(const std::string& path, const char* what, std::uintma
     while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
         text.append(chunk.data(), static_cast<size_t>(in.gcount()));
         if (text.size() > maxBytes)
-            throw ScenarioError(fmt::format("{}: the {} is larger than {} bytes ({} MiB, README.md, \"Input size "
+            throw ScenarioError(fmt::format("{}: the {} is larger than {} bytes ({} MiB, docs/cli.md, \"Input size "
                                             "limits\")",
                                             path, what, maxBytes, maxBytes >> 20));
     }

@@ -47,7 +47,7 @@ public:
 
 /// The accepted range of one scenario value, declared once: the loader (files and
 /// overrides), the command line's options and checkScenario (the Python module and
-/// every run) all test values against it. README.md, "Accepted ranges", lists them.
+/// every run) all test values against it. docs/cli.md, "Accepted ranges", lists them.
 struct ValueRange {
     std::string key;               ///< scenario key ("run.speed", "car.roll_damping"), or a command-line option
     units::Dimension dimension;
@@ -131,7 +131,7 @@ CarParameters makeCarParameters(std::string_view carName);
 /// Scenario that runs bit for bit like this one.
 std::string formatScenarioToml(const Scenario& sc);
 
-/// Input size limits (README.md, "Input size limits"): a scenario, car or summary file, and
+/// Input size limits (docs/cli.md, "Input size limits"): a scenario, car or summary file, and
 /// a measured-track CSV (whose rows mbmodel/TrackInput.h kMaxTrackRows also bounds). Larger
 /// files are refused before they are read, so time and memory stay bounded.
 inline constexpr std::uintmax_t kMaxScenarioFileBytes = std::uintmax_t(16) << 20;

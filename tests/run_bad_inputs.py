@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Runs every case of tests/data/bad/cases.tsv through the real rockroll binary and
-checks its exit code and message (ctest BadInputs.Corpus; issue 12).
+checks its exit code and message (ctest BadInputs.Corpus; docs/cli.md, "Exit codes").
 
 usage: run_bad_inputs.py ROCKROLL_BIN SOURCE_DIR WORK_DIR
 

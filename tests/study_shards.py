@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """A parameter study run whole, as 2 shards merged, and killed and resumed, gives the
 same study.csv and study.json byte for byte; merge refuses shards that do not make one
-study (ctest StudyCli.ShardsMergeToTheUnshardedStudy; issue 13 item 5).
+study (ctest StudyCli.ShardsMergeToTheUnshardedStudy; docs/studies.md).
 
 usage: study_shards.py ROCKROLL_BIN SOURCE_DIR WORK_DIR
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A sweep killed with SIGKILL midway resumes to the result of an uninterrupted sweep
-(ctest SweepResume.KilledSweepResumesToTheSameResult; issue 12 item 5).
+(ctest SweepResume.KilledSweepResumesToTheSameResult; docs/outputs.md).
 
 usage: sweep_resume.py ROCKROLL_BIN SOURCE_DIR WORK_DIR
 

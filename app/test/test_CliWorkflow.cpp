@@ -231,7 +231,7 @@ TEST(CliWorkflow, ExistingNonEmptyDirectoryNeedsForce) {
     EXPECT_TRUE(fs::exists(dir / "empty" / "summary.json"));
 }
 
-// An output that cannot be written is bad input, exit 2 (README, Exit codes), for every
+// An output that cannot be written is bad input, exit 2 (docs/cli.md, "Exit codes"), for every
 // command with --out, before anything is computed; the message names the flag and the path.
 TEST(CliWorkflow, AnOutputThatCannotBeWrittenExits2) {
     const fs::path dir = rockroll::test::makeTestTempDir();

@@ -171,7 +171,7 @@ TEST(DocCommands, ExtractionFindsInlineBlockAndWrappedCommands) {
 TEST(DocCommands, ParseOnlyRejectsAnUnknownFlag) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     const CliOutcome bad = runDocCommand(dir, "steady scenarios/70ton-loaded.toml --no-stability", true);
-    EXPECT_EQ(bad.exitCode, 2) << bad.err;  // every command-line error is bad input (README, exit codes)
+    EXPECT_EQ(bad.exitCode, 2) << bad.err;  // every command-line error is bad input (docs/cli.md, "Exit codes")
     EXPECT_NE(bad.err.find("The following argument was not expected"), std::string::npos) << bad.err;
     const CliOutcome good = runDocCommand(dir, "steady scenarios/70ton-loaded.toml --stability none", true);
     EXPECT_EQ(good.exitCode, 0) << good.err;
@@ -180,7 +180,7 @@ TEST(DocCommands, ParseOnlyRejectsAnUnknownFlag) {
 
 TEST(DocCommands, EveryQuotedCommandRuns) {
     const auto commands = extractAll();
-    // README's runnable examples alone are more than this; fewer means the extraction broke.
+    // The README's runnable examples alone are more than this; fewer means the extraction broke.
     ASSERT_GE(commands.size(), 8u);
     const fs::path root = rockroll::test::makeTestTempDir();
     int index = 0, ran = 0, parsed = 0, named = 0;

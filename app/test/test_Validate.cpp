@@ -292,7 +292,7 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
 }
 
 // A section that fails is reported with its error (stderr, REPORT.md, validation.json),
-// the sections after it still run, and validate exits 4 (README, Exit codes). The
+// the sections after it still run, and validate exits 4 (docs/cli.md, "Exit codes"). The
 // failure is injected through ROCKROLL_VALIDATE_FAIL_SECTION (app/Validate.cpp).
 TEST(Validate, AFailedSectionIsReportedAndTheOthersStillRun) {
     const fs::path dir = rockroll::test::makeTestTempDir(), out = dir / "out";

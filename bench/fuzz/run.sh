@@ -9,7 +9,7 @@
 # Needs Debian's clang and libclang-rt-<version>-dev (fuzzing only; not in build.sh's list).
 # Writes, under build-fuzz/fuzz-out/:
 #   crashes/<harness>/   crash-*, timeout-* (over 10 s), oom-* (over 2 GB) inputs: none expected;
-#                        each one found becomes a regression test (bench/README.md)
+#                        each one found becomes a regression test (docs/building.md)
 #   corpus/<harness>/    the corpus grown by the run (kept for the next run)
 #   logs/<harness>.log   libFuzzer's log, ending with its final stats
 #   summary.tsv          harness, executions, exec/s, seconds, result

@@ -53,7 +53,7 @@ TEST(DescribingFunction, StaticGuessBalancesWithoutInput) {
     EXPECT_LT(r.norm(), 1e-6);
 }
 
-// Issue 3: on the lowest branch at two speeds the steady roll amplitude of the
+// On the lowest branch at two speeds the steady roll amplitude of the
 // describing function is within 5 % of a long run of its time-domain twin.
 TEST(DescribingFunction, LowestBranchMatchesItsTimeDomainTwin) {
     const DescribingFunctionModel df = makeModel(0.75);
@@ -66,7 +66,7 @@ TEST(DescribingFunction, LowestBranchMatchesItsTimeDomainTwin) {
     }
 }
 
-// Issue 3: continuation passes at least one fold, and inside the fold region
+// Continuation passes at least one fold, and inside the fold region
 // there are three or more solutions at one speed.
 TEST(DescribingFunction, ContinuationTracesTheFoldsOfTheJumpResonance) {
     const DescribingFunctionModel df = makeModel(0.75);

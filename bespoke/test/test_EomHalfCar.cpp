@@ -54,7 +54,7 @@ TEST(EomHalfCar, MirroredInputGivesMirroredRoll) {
     for (size_t i = 0; i < ra.size(); ++i) ASSERT_NEAR(ra[i], -rb[i], 2e-3 * peak) << "sample " << i;
 }
 
-// Issue 3: on a light-rocking case (0.5 in, 12 mph, 30 s) the roll histories of
+// On a light-rocking case (0.5 in, 12 mph, 30 s) the roll histories of
 // the hand-written model and the Simbody half car agree within 1 % of their peak
 // at every output time.
 TEST(EomHalfCar, ReproducesSimbodyHalfCarRollHistory) {

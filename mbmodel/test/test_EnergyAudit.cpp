@@ -1,4 +1,4 @@
-// Energy audit (issue 9, item 4): the element laws' elastic energy and
+// Energy audit (docs/model.md, "Energy audit"): the element laws' elastic energy and
 // dissipated power, the balance function, and the balance W = ΔE + D of every
 // time-domain model on a short severe run.
 #include "contacts/BristleFriction.h"
@@ -154,7 +154,7 @@ Scenario makeSevereCase(const std::string& model, double duration) {
     return test_cases::makeCase(model, 1.0, 16.5, duration);
 }
 
-/// `bound`: the summary's end-of-run energy_balance_error (issue 9: 1 %);
+/// `bound`: the summary's end-of-run energy_balance_error (held to 1 %, docs/model.md "Energy audit");
 /// `worstBound`: the worst ratio after 0.5 s (docs/model.md "Energy audit").
 void expectBalanced(const ScenarioRun& run, const std::string& model, double bound, double worstBound = -1) {
     if (worstBound < 0) worstBound = bound;

@@ -1,4 +1,4 @@
-// Measured track from CSV ([track] file, issue 13 item 4): the shipped table of the
+// Measured track from CSV ([track] file; docs/cli.md, "Measured track"): the shipped table of the
 // report's staggered rectified sine runs as the built-in sine does, and the loader
 // names the file, line and column of a bad table.
 #include "scenarios/ScenarioRun.h"

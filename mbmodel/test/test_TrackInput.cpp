@@ -81,7 +81,7 @@ TEST(TrackInput, MeasuredTableIsInterpolated) {
     EXPECT_THROW(TrackInput{t}, std::invalid_argument);
 }
 
-// ---- measured track: tapers, repeat, and the CSV reader (issue 13 item 4) ----
+// ---- measured track: tapers, repeat, and the CSV reader (docs/cli.md, "Measured track") ----
 
 namespace {
 /// What readTrackCsv throws for `csv`, or "".
@@ -174,7 +174,7 @@ TEST(TrackInput, CsvErrorsNameLineAndColumn) {
     }
 }
 
-// Input size limits (README.md, "Input size limits"): a table of kMaxTrackRows rows reads,
+// Input size limits (docs/cli.md, "Input size limits"): a table of kMaxTrackRows rows reads,
 // one more row is refused naming its line; text over kMaxTrackFileBytes is refused unread.
 TEST(TrackInput, TablesOverTheSizeLimitsAreRefused) {
     std::string csv = "distance [m], left [m], right [m]\n";

@@ -25,7 +25,7 @@ TEST(Units, RejectsWrongDimensionMissingAndUnknownUnits) {
     }
 }
 
-// Issue 13 item 3: the SI and metric forms engineers type, each against its conversion factor
+// The SI and metric forms engineers type (docs/cli.md, "Units"), each against its conversion factor
 // (written out here, independently of the table in mbmodel/Units.cpp).
 TEST(Units, ParsesMetricFormsByTheirFactors) {
     struct Case {

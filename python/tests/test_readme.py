@@ -1,5 +1,5 @@
-"""Every Python use quoted in README.md runs (its `rockroll` commands are checked by
-app/test/test_DocCommands.cpp): each fenced ```python block as a script, and each line of a
+"""Every Python use quoted in README.md and docs/*.md runs (their `rockroll` commands are
+checked by app/test/test_DocCommands.cpp): each fenced ```python block as a script, and each line of a
 fenced ```sh block that starts with `PYTHONPATH=build/python /usr/bin/python3` as a shell
 command; both in a fresh directory holding links to scenarios/ and examples/, with
 PYTHONPATH pointing at this build's module."""
@@ -14,7 +14,8 @@ PREFIX = "PYTHONPATH=build/python /usr/bin/python3 "
 
 
 def quoted():
-    text = (SOURCE_DIR / "README.md").read_text()
+    files = [SOURCE_DIR / "README.md"] + sorted((SOURCE_DIR / "docs").glob("*.md"))
+    text = "\n".join(f.read_text() for f in files)
     blocks = re.findall(r"^```(\w*)\n(.*?)^```", text, flags=re.S | re.M)
     scripts = [body for lang, body in blocks if lang == "python"]
     shell = [re.sub(r"\s+#.*$", "", line) for lang, body in blocks if lang == "sh"
@@ -24,7 +25,7 @@ def quoted():
 
 def test_readme_python_uses_run(tmp_path):
     scripts, shell = quoted()
-    assert scripts and shell, "README.md quotes no Python use"
+    assert scripts and shell, "README.md and docs/ quote no Python use"
     for name in ("scenarios", "examples"):
         (tmp_path / name).symlink_to(SOURCE_DIR / name)
     env = dict(os.environ)  # PYTHONPATH made absolute: the commands run in tmp_path

@@ -1,4 +1,4 @@
-// The attribution switches (issue 9): the reduced model's [reduced] truck_weight
+// The attribution switches (docs/model.md, "Parameters"; results/REPORT.md section 10): the reduced model's [reduced] truck_weight
 // and the Simbody models' [attribution] truck_gravity / truck_mass_scale. Each
 // must change exactly what it says in the static state, and nothing else.
 #include "bespoke/ReducedHalfCarModel.h"

@@ -46,7 +46,7 @@ TEST(CarFiles, PublishedValuesAreReadExactly) {
     EXPECT_EQ(loaded.sideBearingAboveSprings, 12.1875 * u::inch);
     EXPECT_EQ(loaded.truckSpacing, 39.0 * u::foot);
     EXPECT_EQ(empty.cgAboveCenterPlate, 35.0 * u::inch);
-    // brief §3: the empty car's pitch inertia is the loaded car's scaled by weight.
+    // The empty car's pitch inertia is the loaded car's scaled by weight (docs/model.md §5).
     EXPECT_EQ(empty.pitchInertia, 16650000 * (66000.0 / 172650.0) * u::lbInS2);
     EXPECT_EQ(heavy.gibRate, 55000 * u::lbfPerInch);
     EXPECT_EQ(heavy.wheelRadius, 18.0 * u::inch);

@@ -57,7 +57,7 @@ TEST(RunOutcome, WallTimeLimitIsANumericalFailureWithExitThree) {
     EXPECT_NE(readTextFile(dir / "err.txt").find("wall-time limit"), std::string::npos) << readTextFile(dir / "err.txt");
 }
 
-// SIGINT and SIGTERM end a run with exit 130 (README, exit codes). The full car's 20 s
+// SIGINT and SIGTERM end a run with exit 130 (docs/cli.md, "Exit codes"). The full car's 20 s
 // run takes far longer than the one second before the signal.
 TEST(RunOutcome, SigtermAndSigintExitWith130) {
     const fs::path dir = makeTempDir();

@@ -87,7 +87,7 @@ TEST(ScenarioLoader, CommandLineRejectsABadScenarioWithNonZeroExit) {
     EXPECT_NE(msg.find("parsecs"), std::string::npos) << msg;
 }
 
-// Issue 12: one declared range per value, NaN and infinity refused everywhere, integers
+// One declared range per value (docs/cli.md, "Accepted ranges"), NaN and infinity refused everywhere, integers
 // that do not wrap, and the file's line in every message.
 TEST(ScenarioLoader, RangesRefuseNonFiniteOutOfRangeAndWrappedValues) {
     using test_cases::replaceOnce;
@@ -157,16 +157,16 @@ TEST(ScenarioLoader, MemoryEstimateRefusesARunAboveTheLimit) {
     EXPECT_EQ(getMemoryLimitBytes(), 2048.0 * 1024 * 1024);
 }
 
-TEST(ScenarioLoader, EveryDeclaredRangeIsInTheReadme) {
-    std::ifstream in(std::string(ROCKROLL_SOURCE_DIR) + "/README.md");
+TEST(ScenarioLoader, EveryDeclaredRangeIsInTheDocs) {
+    std::ifstream in(std::string(ROCKROLL_SOURCE_DIR) + "/docs/cli.md");
     const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     for (const ValueRange& r : getValueRanges()) {
-        if (r.key.rfind("car.", 0) == 0) continue;  // the car's parameters: finite and ≥ 0 (README says so)
+        if (r.key.rfind("car.", 0) == 0) continue;  // the car's parameters: finite and ≥ 0 (docs/cli.md says so)
         EXPECT_NE(readme.find("| `" + r.key + "` | " + r.describe() + " |"), std::string::npos) << r.key;
     }
 }
 
-// Input size limits (README.md, "Input size limits"): a track file over kMaxTrackFileBytes
+// Input size limits (docs/cli.md, "Input size limits"): a track file over kMaxTrackFileBytes
 // (a sparse 100 MB file here) and a scenario file over kMaxScenarioFileBytes are refused
 // before they are read; a device or a folder named as a track file is refused, not read
 // for ever (/dev/zero) or half-read.
