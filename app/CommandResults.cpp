@@ -371,6 +371,8 @@ nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc,
                                     {"twin_persistence", std::isfinite(p.twinPersistence) && p.twinPersistence > 0
                                                              ? nlohmann::ordered_json(p.twinPersistence)
                                                              : nlohmann::ordered_json(nullptr)},
+                                    {"twin_landed_on", p.twinLandedOn.empty() ? nlohmann::ordered_json(nullptr)
+                                                                              : nlohmann::ordered_json(p.twinLandedOn)},
                                     {"max_floquet_multiplier", orNullIfNaN(p.maxFloquetMultiplier)},
                                     {"dominant_multiplier_re", orNullIfNaN(p.checked ? p.dominantMultiplier.real() : NAN)},
                                     {"dominant_multiplier_im", orNullIfNaN(p.checked ? p.dominantMultiplier.imag() : NAN)}});

@@ -221,7 +221,7 @@ int steadyCommand(const SteadyOptions& o) {
     fmt::print("paths (each a continuation, and how it was started):\n");
     for (size_t k = 0; k < r.set.paths.size(); ++k) {
         const auto& p = r.set.paths[k];
-        fmt::print("  {}: {}, {} points, {} folds{}\n", k, p.start, p.points.size(),
+        fmt::print("  path {}: {}, {} points, {} folds{}\n", k, p.start, p.points.size(),
                    p.points.empty() ? 0 : p.points.back().foldsBefore, p.closed ? ", closed (an isola)" : "");
     }
     for (const auto& c : r.set.changes)

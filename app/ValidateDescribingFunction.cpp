@@ -60,7 +60,7 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
                                          const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta) {
     const Mit1976& ref = Mit1976::get();
     const ContinuationSettings cs;
-    std::string md = "## 5. The describing-function solution set over the simulated sweeps (report Figures 31 and 34)\n\n";
+    std::string md = "## 5. Describing-function solution set over the simulated sweeps (report Figures 31 and 34)\n\n";
     md += fmt::format(
         "Made by `rockroll steady scenarios/70ton-loaded.toml --amplitude-in A --from-mph {:g} --to-mph {:g} "
         "--stability {}`{}; data `steady_70ton-loaded_<A>in.csv`, plot `steady_70ton-loaded_<A>in.png` with the "

@@ -492,8 +492,12 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
     TwinFloquet out;
     M::State y = makeTwinState(x, speedMph);
     M::State base = flow(y);
+    // Newton with Broyden's rank-one updates of the monodromy between iterations (one
+    // flow an iteration instead of 23); a fresh finite-difference monodromy on the orbit
+    // found gives the multipliers.
     Eigen::MatrixXd Phi = monodromyAt(y, base);
-    for (int it = 0; it < 8; ++it) {
+    bool moved = false;
+    for (int it = 0; it < 12; ++it) {
         const M::State r = base - y;
         out.mismatch = r.cwiseQuotient(step).cwiseAbs().maxCoeff();
         // Within a few perturbation steps (tens of µm against mm of motion): a sticking
@@ -516,11 +520,21 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
         } catch (const NumericalFailure&) {
             break;
         }
-        if ((baseNext - yNext).cwiseQuotient(step).cwiseAbs().maxCoeff() > 10 * out.mismatch) break;
+        const M::State rNext = baseNext - yNext;
+        if (rNext.cwiseQuotient(step).cwiseAbs().maxCoeff() > 10 * out.mismatch) break;
+        // Broyden: (Φ − I) δ must reproduce the change of the mismatch.
+        Phi += ((rNext - r) - A * delta) * delta.transpose() / delta.squaredNorm();
         y = yNext;
         base = baseNext;
-        Phi = monodromyAt(y, base);
+        moved = true;
     }
+    if (!out.converged) {
+        // Multipliers of an approximate monodromy off the orbit would read as evidence.
+        out.maxMultiplier = std::numeric_limits<double>::quiet_NaN();
+        out.dominant = {out.maxMultiplier, 0.0};
+        return out;
+    }
+    if (moved) Phi = monodromyAt(y, base);
     const Eigen::VectorXcd mu = Phi.eigenvalues();
     Eigen::Index largest = 0;
     out.maxMultiplier = mu.cwiseAbs().maxCoeff(&largest);
@@ -545,6 +559,35 @@ double DescribingFunctionModel::calcTwinPersistence(const Eigen::VectorXd& x, do
     for (const auto& row : r.history.samples)
         if (row[0] >= (periods - 1) * period) lo = std::min(lo, row[c]), hi = std::max(hi, row[c]);
     return 0.5 * (hi - lo) / describe(x, speedMph).rollAmplitudeDeg;
+}
+
+namespace {
+/// Two solutions are the same when their harmonics (means left out) differ by at most
+/// `relative` of the larger harmonic plus `absolute` (mm, mrad).
+bool isSameSolution(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double relative, double absolute) {
+    double d = 0, size = 0;
+    for (int i = 0; i < a.size(); ++i)
+        if (i % DescribingFunctionModel::kCoefficients != 0)
+            d = std::max(d, std::abs(a[i] - b[i])), size = std::max(size, std::abs(a[i]));
+    return d <= relative * size + absolute;
+}
+}  // namespace
+
+TwinPersistence DescribingFunctionModel::checkTwinPersistence(const Eigen::VectorXd& x, double speedMph,
+                                                              int periods) const {
+    TwinPersistence out;
+    const Eigen::VectorXd landed = projectTwinState(makeTwinState(x, speedMph), speedMph, periods);
+    const double roll = describe(x, speedMph).rollAmplitudeDeg;
+    out.ratio = describe(landed, speedMph).rollAmplitudeDeg / roll;
+    if (const auto back = solve(speedMph, landed)) {
+        out.landedRollDeg = describe(*back, speedMph).rollAmplitudeDeg;
+        // 2 %: far below the gap between neighbouring solutions at one speed (tens of %).
+        out.stayed = isSameSolution(*back, x, 0.02, 0.02);
+        out.landedOn = out.stayed ? "this solution" : "another solution";
+    } else {
+        out.landedOn = "no solution";
+    }
+    return out;
 }
 
 SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) const {
@@ -649,12 +692,7 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
     // Whether a solution lies on a path already traced: within 10 % (plus 0.05 mm or
     // mrad) of the path's harmonics interpolated to its speed, means left out.
     auto isKnown = [&](const Eigen::VectorXd& x, double speedMph) {
-        auto distance = [&](const Eigen::VectorXd& a) {
-            double d = 0, size = 0;
-            for (int i = 0; i < n; ++i)
-                if (i % kCoefficients != 0) d = std::max(d, std::abs(x[i] - a[i])), size = std::max(size, std::abs(x[i]));
-            return d <= 0.1 * size + 0.05;
-        };
+        auto distance = [&](const Eigen::VectorXd& a) { return isSameSolution(x, a, 0.1, 0.05); };
         for (const auto& path : set.paths)
             for (size_t i = 0; i < path.points.size(); ++i) {
                 const SteadyStatePoint& a = path.points[i];
@@ -736,11 +774,19 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
             p.floquetConverged = false;
         }
         try {
-            p.twinPersistence = calcTwinPersistence(p.harmonics, p.speedMph, s.persistencePeriods);
-            stays = std::abs(p.twinPersistence - 1) <= kPersistenceTolerance;
+            const TwinPersistence t = checkTwinPersistence(p.harmonics, p.speedMph, s.persistencePeriods);
+            p.twinPersistence = t.ratio;
+            p.twinLandedOn = t.landedOn;
+            // A last period that solves onto no solution says neither (the ansatz does
+            // not hold the twin's motion there).
+            if (t.landedOn != "no solution") stays = t.stayed;
         } catch (const NumericalFailure&) {
+            p.twinLandedOn = "twin failed";
         }
-        if (!stays) {
+        if (!stays && floquetStable) {
+            p.stabilityEvidence = "floquet (persistence inconclusive)";
+            p.stability = *floquetStable ? Stability::Stable : Stability::Unstable;
+        } else if (!stays) {
             p.stabilityEvidence = "none";
             p.stability = Stability::NotComputed;
         } else if (floquetStable && *floquetStable != *stays) {

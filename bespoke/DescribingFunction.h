@@ -7,7 +7,8 @@
 // angles), so its time-domain twin is EomHalfCarModel with the same flags.
 // Input: a sinusoidal cross-level c(τ) = C·sin τ, τ = ωt, ω = 2πV/L_r, rails at
 // ∓c/2; C is the fundamental harmonic of the actual cross-level,
-//     C = (8A/3π)·cos(π·wheelbase/L_r)      (brief §5).
+//     C = (8A/3π)·cos(π·wheelbase/L_r)      (report §2.2 eqs 1–2 and 6–7: the rectified
+// sine's fundamental, averaged over the wheelbase; the equivalent sinusoid of report §4).
 // Ansatz: every position q_j(τ) = q_j0 + a_j1 cos τ + b_j1 sin τ + a_j2 cos 2τ + b_j2 sin 2τ.
 // Balance, per degree of freedom j and harmonic (report eq. 23):
 //     mean:  0 = Q_j0,     k = 1, 2:  −(kω)²·M_j·(a_jk, b_jk) = (Q_j,cos k, Q_j,sin k),
@@ -68,6 +69,14 @@ struct TwinMaxima {
 /// near resonance: docs/bespoke.md, "Stability").
 inline constexpr double kPersistenceTolerance = 0.15;
 
+/// What the twin did when started on a solution (DescribingFunctionModel::checkTwinPersistence).
+struct TwinPersistence {
+    double ratio = std::numeric_limits<double>::quiet_NaN();  ///< its last period's two-harmonic roll amplitude / the solution's
+    std::string landedOn;  ///< "this solution" | "another solution" | "no solution"
+    double landedRollDeg = std::numeric_limits<double>::quiet_NaN();  ///< the solution it solved onto
+    bool stayed = false;
+};
+
 struct SteadyStatePoint {
     double speedMph = 0;
     double rollAmplitudeDeg = 0;      ///< half peak-to-peak of car-body roll (two-harmonic series)
@@ -83,7 +92,9 @@ struct SteadyStatePoint {
     double maxFloquetMultiplier = 0;  ///< |μ|max on the twin's orbit; < 1 is stable (NaN when not computed)
     bool floquetConverged = false;    ///< the shooting found the twin's periodic orbit
     double twinPersistence = 0;       ///< twin's roll amplitude after the persistence run / this point's (NaN if not run)
-    /// floquet+persistence | persistence | floquet, persistence disagree | none | interpolated
+    std::string twinLandedOn;         ///< where the persistence run's last period solved onto (TwinPersistence)
+    /// floquet+persistence | persistence | floquet (persistence inconclusive) |
+    /// floquet, persistence disagree | none | interpolated
     std::string stabilityEvidence = "none";
     bool checked = false;             ///< this point's own stability was checked (not taken from a neighbour)
     int foldsBefore = 0;              ///< folds passed along the path before this point
@@ -140,7 +151,7 @@ struct ContinuationSettings {
     int maxPoints = 600;       ///< per path
     StabilityMethod stability = StabilityMethod::FoldRule;
     int persistencePeriods = 20;  ///< the persistence run of a stability check
-    int maxChecksPerStretch = 9;  ///< the fold rule's checks, bisection included
+    int maxChecksPerStretch = 7;  ///< the fold rule's checks, bisection included
     /// Starts besides the two ends of the range: the twin swept down and up in
     /// speed (each speed `sweepPeriods` forcing periods, the state carried over),
     /// its last period projected onto two harmonics and solved; 0 = no sweep starts.
@@ -215,6 +226,13 @@ public:
     /// The twin started on the harmonic solution: its roll amplitude over the
     /// last of `periods` periods divided by the harmonic solution's.
     double calcTwinPersistence(const Eigen::VectorXd& x, double speedMph, int periods) const;
+    /// The persistence check: the twin run `periods` periods from the solution, its last
+    /// period projected on two harmonics and solved. It stayed when that solves back onto
+    /// the solution it started from (so the describing function's truncation error, the
+    /// gap between the solution and the twin's own orbit, is not read as leaving); it left
+    /// when it solves onto another solution; when it solves onto none, the check says
+    /// neither (landedOn "no solution", stayed false).
+    TwinPersistence checkTwinPersistence(const Eigen::VectorXd& x, double speedMph, int periods) const;
     /// The twin's state at τ = 0 reconstructed from the harmonics.
     EomHalfCarModel::State makeTwinState(const Eigen::VectorXd& x, double speedMph) const;
     EomHalfCarModel makeTwin(double speedMph) const;

@@ -180,8 +180,18 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
         const auto json = nlohmann::json::parse(readTextFile(dir / "steady" / "steady.json"));
         nlohmann::json records = nlohmann::json::array();
         for (size_t b = 0; b < json.at("branches").size(); ++b)
-            for (auto p : json.at("branches")[b].at("points")) {
+            for (const auto& point : json.at("branches")[b].at("points")) {
+                // The force harmonics and the twin's maxima are objects in the JSON and
+                // columns named <key>_<field> in the CSV.
+                nlohmann::json p = nlohmann::json::object();
+                for (const auto& [key, value] : point.items()) {
+                    if (value.is_object())
+                        for (const auto& [field, v] : value.items()) p[key + "_" + field] = v;
+                    else
+                        p[key] = value;
+                }
                 p["branch"] = b;
+                p["path"] = json.at("branches")[b].at("path");
                 p["stability"] = json.at("branches")[b].at("stability");
                 records.push_back(p);
             }

@@ -41,8 +41,14 @@ const std::vector<std::string> kSweepNumbers{"speed_mph",         "max_roll_deg"
                                              "peak_to_peak_roll_deg", "max_wheel_lift_in", "max_wheel_load_lb",
                                              "min_wheel_load_ratio",  "max_side_bearing_load_lb",
                                              "max_center_plate_load_lb"};
-const std::vector<std::string> kSteadyNumbers{"branch",           "speed_mph",         "roll_amplitude_deg",
-                                              "wheel_lift_fraction", "max_wheel_load_lb", "max_side_bearing_load_lb",
+const std::vector<std::string> kSteadyNumbers{"branch",
+                                              "path",
+                                              "speed_mph",
+                                              "roll_amplitude_deg",
+                                              "roll_first_harmonic_deg",
+                                              "wheel_lift_fraction",
+                                              "side_bearing_load_mean_lb",
+                                              "side_bearing_load_first_harmonic_lb",
                                               "folds_before"};
 
 void expectColumns(const CsvTable& t, const std::vector<std::string>& names, std::vector<std::string>& errors,
@@ -340,8 +346,11 @@ TEST(Validate, ReadBackChecksCatchWrongFiles) {
           "max_wheel_load_lb,max_side_bearing_load_lb,folds_before\n0,-1,12.0000,0.6100,0.0000,40000,1000,0\n");
     EXPECT_NE(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", true)), "");
     const std::string good =
-        "branch,stable,speed_mph,roll_amplitude_deg,wheel_lift_fraction,max_wheel_load_lb,max_side_bearing_load_lb,"
-        "folds_before\n0,yes,12.0000,0.6100,0.0000,40000,1000,0\n0,yes,12.5000,0.6500,0.0000,41000,1100,0\n";
+        "branch,path,stable,speed_mph,roll_amplitude_deg,roll_first_harmonic_deg,wheel_lift_fraction,"
+        "side_bearing_load_mean_lb,side_bearing_load_first_harmonic_lb,twin_stayed,twin_max_truck_side_wheel_load_lb,"
+        "twin_max_side_bearing_load_lb,checked,stability_evidence,folds_before\n"
+        "0,0,yes,12.0000,0.6100,0.6000,0.0000,0,0,yes,40000,1000,1,floquet+persistence,0\n"
+        "0,0,yes,12.5000,0.6500,0.6400,0.0000,0,0,yes,41000,1100,0,interpolated,0\n";
     write("steady_70ton-loaded_0.75in.csv", good);
     EXPECT_NE(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", true)), "") << "quick run said stable";
     EXPECT_EQ(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", false)), "");
@@ -362,10 +371,10 @@ TEST(Validate, ReadBackChecksCatchWrongFiles) {
     EXPECT_EQ(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
     sidecar("roll_amplitude_deg", 1.0, 1100);  // drew another column's values under this name
     EXPECT_NE(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
-    sidecar("max_side_bearing_load_lb", 1.0, 1100);  // honest sidecar, wrong column for this plot
+    sidecar("twin_max_side_bearing_load_lb", 1.0, 1100);  // honest sidecar, wrong column for this plot
     EXPECT_EQ(join(checkPlotSidecar(dir, "steady_70ton-loaded_0.75in.png")), "");
     const std::string wrong = join(checkPlotColumns(dir, "steady_70ton-loaded_0.75in.png"));
-    EXPECT_NE(wrong.find("draws max_side_bearing_load_lb against speed_mph from steady_70ton-loaded_0.75in.csv, which it "
+    EXPECT_NE(wrong.find("draws twin_max_side_bearing_load_lb against speed_mph from steady_70ton-loaded_0.75in.csv, which it "
                          "should not"), std::string::npos) << wrong;
 }
 
