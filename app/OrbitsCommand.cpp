@@ -1,4 +1,5 @@
 #include "app/OrbitsCommand.h"
+#include "scenarios/SpeedSweep.h"
 
 #include "app/Output.h"
 #include "app/Provenance.h"
@@ -113,26 +114,63 @@ int orbitsCommand(const OrbitsOptions& o) {
     std::optional<OutputDirectory> dir;
     if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);
 
-    // The start: a run from rest at --from-mph, at the orbit's accuracy.
+    // The start: a run from rest at --from-mph, or a speed sweep ending there, at the
+    // orbit's accuracy.
     Scenario start = sc0;
     start.speed = o.fromMph * units::mph;
     start.run.duration = o.startDurationS;
     start.run.integrator.accuracy = o.accuracy;
     const auto wall0 = std::chrono::steady_clock::now();
-    const ScenarioRun startRun = runScenario(start);
-    if (startRun.result.stop)
-        throw std::runtime_error(fmt::format("the start run at {:g} mph stopped: the car {} at t = {:.3f} s", o.fromMph,
-                                             startRun.result.stop->regime, startRun.result.stop->time));
+    RestartState startState;
+    RunSummary startSummary;
+    std::string startKind = fmt::format("a {:g} s run from rest", o.startDurationS);
+    if (o.startSweepFromMph) {
+        const double v0 = *o.startSweepFromMph;
+        if (v0 == o.fromMph)
+            throw ScenarioError(fmt::format("--start-sweep-from-mph {:g} equals --from-mph: expected the speed the start "
+                                            "sweep comes from",
+                                            v0));
+        SweepSpec spec;
+        spec.scenario = start;
+        spec.fromMph = std::min(v0, o.fromMph);
+        spec.toMph = std::max(v0, o.fromMph);
+        spec.stepMph = std::abs(o.stepMph);
+        spec.direction = v0 > o.fromMph ? SweepDirection::Down : SweepDirection::Up;
+        startKind = fmt::format("a {} sweep from {:g} mph ({:g} mph steps, {:g} s a speed)",
+                                v0 > o.fromMph ? "down" : "up", v0, spec.stepMph, o.startDurationS);
+        const std::vector<SweepPoint> sweep = runSweep(spec, [&](const SweepPoint& p) {
+            if (!o.json)
+                fmt::print(stderr, "orbits: start sweep {:g} mph: {}\n", p.speedMph,
+                           p.failed ? "failed: " + p.error
+                                    : fmt::format("{}, steady roll amplitude {:.3f} deg", p.summary.regime,
+                                                  p.summary.steadyRollAmplitudeDeg));
+        });
+        const SweepPoint& last = sweep.back();
+        if (last.failed)
+            throw std::runtime_error(fmt::format("the start sweep failed at {:g} mph: {}", last.speedMph, last.error));
+        if (!last.next.from)
+            throw std::runtime_error(fmt::format("the start sweep stopped at {:g} mph: the car {}", last.speedMph,
+                                                 last.summary.regime));
+        startState = *last.next.from;
+        startSummary = last.summary;
+    } else {
+        const ScenarioRun startRun = runScenario(start);
+        if (startRun.result.stop)
+            throw std::runtime_error(fmt::format("the start run at {:g} mph stopped: the car {} at t = {:.3f} s",
+                                                 o.fromMph, startRun.result.stop->regime, startRun.result.stop->time));
+        startState = startRun.restart;
+        startSummary = startRun.summary;
+    }
     const double startWall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
-    const PeriodicOrbitSolver solver(sc0, startRun.restart.distance, settings);
+    const PeriodicOrbitSolver solver(sc0, startState.distance, settings);
     OrbitContinuationSettings cs;
     cs.fromMph = o.fromMph;
     cs.toMph = o.toMph;
     cs.stepMph = o.stepMph;
     cs.refinements = o.refinements;
     const OrbitContinuation continuation(solver, cs);
-    const OrbitBranch branch = continuation.trace(startRun.restart.y, [&](const PeriodicOrbit& p) {
+    const OrbitBranch branch = continuation.trace(startState.y, [&](const PeriodicOrbit& p) {
         if (!o.json)
             fmt::print(stderr, "orbits: {:.4g} mph {} ({:.1f} s)\n", p.speedMph,
                        p.converged ? fmt::format("period {}, roll {:.3f} deg, |mu|max {:.4f}", p.period,
@@ -141,11 +179,11 @@ int orbitsCommand(const OrbitsOptions& o) {
                        p.wallTimeS);
     });
     if (branch.stopReason == "no orbit at the start speed")
-        throw std::runtime_error(fmt::format("no periodic orbit at --from-mph {:g} from the end of a {:g} s run from "
-                                             "rest ({} rocking, steady roll amplitude {:.3f} deg): {} (a longer "
-                                             "--start-duration-s, or another start speed)",
-                                             o.fromMph, o.startDurationS, startRun.summary.regime,
-                                             startRun.summary.steadyRollAmplitudeDeg, branch.points.front().failure));
+        throw std::runtime_error(fmt::format("no periodic orbit at --from-mph {:g} from the end of {} ({} rocking, "
+                                             "steady roll amplitude {:.3f} deg): {} (a longer --start-duration-s, or "
+                                             "another start speed)",
+                                             o.fromMph, startKind, startSummary.regime,
+                                             startSummary.steadyRollAmplitudeDeg, branch.points.front().failure));
 
     json j;
     j["command"] = "orbits";
@@ -156,10 +194,12 @@ int orbitsCommand(const OrbitsOptions& o) {
                   "monodromy; natural-parameter continuation in speed with a secant predictor (docs/orbits.md)";
     j["accuracy"] = o.accuracy;
     j["start"] = {{"speed_mph", o.fromMph},
+                  {"kind", startKind},
+                  {"sweep_from_mph", o.startSweepFromMph ? json(*o.startSweepFromMph) : json(nullptr)},
                   {"duration_s", o.startDurationS},
-                  {"distance_m", startRun.restart.distance},
-                  {"steady_roll_amplitude_deg", startRun.summary.steadyRollAmplitudeDeg},
-                  {"regime", startRun.summary.regime},
+                  {"distance_m", startState.distance},
+                  {"steady_roll_amplitude_deg", startSummary.steadyRollAmplitudeDeg},
+                  {"regime", startSummary.regime},
                   {"wall_time_s", startWall}};
     j["stop_reason"] = branch.stopReason;
     j["end_bracket_mph"] = branch.endBracketMph

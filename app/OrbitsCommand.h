@@ -15,6 +15,10 @@ struct OrbitsOptions : CommonOptions {
     std::optional<double> amplitudeIn;
     double fromMph = 16, toMph = 10, stepMph = 0.25;
     double startDurationS = 30;  ///< the run from rest at --from-mph whose end the first shooting starts from [s]
+    /// When set, the start is a speed sweep from this speed to --from-mph in --step-mph steps
+    /// (startDurationS at each speed, the state carried over), not a run from rest: the way
+    /// onto an upper branch that a run from rest does not reach [mph].
+    std::optional<double> startSweepFromMph;
     double accuracy = 1e-7;      ///< integrator accuracy of the map
     int refinements = 2;         ///< step halvings at a failure before the branch ends
     int jobs = 0;                ///< threads for the monodromy's columns (0: one per core)

@@ -216,6 +216,10 @@ int main(int argc, char** argv) {
                           "the run from rest at --from-mph whose end the first shooting starts from [s]")
         ->capture_default_str()
         ->check(inRange("run.duration", "s"));
+    orbitsCmd->add_option("--start-sweep-from-mph", orbits.startSweepFromMph,
+                          "start from a speed sweep from this speed to --from-mph (--step-mph steps, "
+                          "--start-duration-s each) instead of a run from rest [mph]")
+        ->check(inRange("run.speed", "mph"));
     orbitsCmd->add_option("--accuracy", orbits.accuracy, "integrator accuracy of the one-period map")
         ->capture_default_str()
         ->check(CLI::Range(1e-12, 1e-3));

@@ -61,3 +61,30 @@ TEST(OrbitsCommand, RefusesTheReducedModel) {
     const CliOutcome r = runRockroll(dir, "orbits " + kScenario + " --model reduced --from-mph 12 --to-mph 11");
     EXPECT_EQ(r.exitCode, 2) << r.err;
 }
+
+// --start-sweep-from-mph: the first shooting starts from the end of a speed sweep that
+// comes down to --from-mph, the way onto an upper branch a run from rest does not reach
+// (docs/orbits.md, "Start"). The JSON names the start; the first orbit is the sweep's.
+TEST(OrbitsCommand, StartsFromTheEndOfADownSweep) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario +
+                                              " --model eom --amplitude-in 1.0 --start-sweep-from-mph 18 --from-mph 17 "
+                                              "--to-mph 16.75 --step-mph 0.25 --start-duration-s 8 --refinements 0 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& start = j.at("start");
+    EXPECT_EQ(start.at("sweep_from_mph").get<double>(), 18.0);
+    EXPECT_NE(start.at("kind").get<std::string>().find("down sweep from 18 mph"), std::string::npos) << start;
+    const auto& first = j.at("points").at(0);
+    ASSERT_TRUE(first.at("converged").get<bool>()) << first;
+    EXPECT_NEAR(first.at("roll_amplitude_deg").get<double>(), start.at("steady_roll_amplitude_deg").get<double>(),
+                0.3 * start.at("steady_roll_amplitude_deg").get<double>());
+}
+
+TEST(OrbitsCommand, RefusesAStartSweepFromItsOwnSpeed) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario +
+                                              " --model eom --from-mph 12 --to-mph 11 --start-sweep-from-mph 12");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("--start-sweep-from-mph"), std::string::npos) << r.err;
+}
