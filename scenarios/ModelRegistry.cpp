@@ -13,6 +13,22 @@ ModelRegistry::ModelRegistry() {
     models_.push_back(describeReducedModel());
 }
 
+bool ModelDescriptor::usesSetting(std::string_view key) const {
+    for (const std::string& s : settings) {
+        if (s == key) return true;
+        if (s.size() > 2 && s.ends_with(".*") && key.starts_with(std::string_view(s).substr(0, s.size() - 1)))
+            return true;
+    }
+    return false;
+}
+
+std::vector<std::string> getCommonSettings() {
+    return {"description",  "car.*",         "track.amplitude", "track.rail_length", "track.rails",
+            "track.mirror", "track.file",    "track.taper",     "track.repeat",      "track.measured",
+            "run.speed",    "run.duration",  "run.model",       "run.filter_cutoff", "limits.*",
+            "criteria.*"};
+}
+
 const ModelRegistry& ModelRegistry::get() {
     static const ModelRegistry registry;
     return registry;

@@ -4,6 +4,8 @@
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
 
+#include <cmath>
+
 namespace rockroll {
 
 namespace {
@@ -26,6 +28,9 @@ ModelDescriptor describeReducedModel() {
     d.name = model_names::kReduced;
     d.description = "the report's reduced half car: massless truck, fixed-step RK4 at 0.005 s (report §2.2)";
     d.masslessTruck = true;
+    d.settings = getCommonSettings();
+    for (const char* key : {"run.output_rate", "reduced.*"}) d.settings.emplace_back(key);
+    d.fixedOutputRateHz = std::round(1 / ReducedHalfCarModel::kStep);  // it records every step
     d.make = [](const Scenario& sc, const TrackMotion& motion) {
         return std::unique_ptr<TimeDomainModel>(std::make_unique<ReducedTimeDomainModel>(ReducedHalfCarModel(
             sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.reduced)));
