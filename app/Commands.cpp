@@ -195,6 +195,7 @@ int runCommand(const RunOptions& o) {
     const bool replacing = defaultOut && isRunOutput(outPath);
     OutputDirectory dir(outPath, o.force || replacing,
                         defaultOut ? "output directory (the default; choose one with --out)" : "--out");
+    checkSwitchesApply(sc);  // a refused setting is an error, not also an ignored one
     reportIgnoredSettings(sc);
     const ScenarioRun run = runScenario(sc);
 
@@ -295,6 +296,7 @@ int sweepCommand(const SweepOptions& o) {
     for (const Scenario& sc : bases) {
         Scenario asRun = sc;
         if (o.model) asRun.model = *o.model;
+        checkSwitchesApply(asRun);
         reportIgnoredSettings(asRun);
     }
     std::optional<OutputDirectory> dir;
