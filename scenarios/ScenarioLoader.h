@@ -1,8 +1,9 @@
 #pragma once
-// Scenario files (TOML): a complete case — car, track, speed, duration, model,
-// integrator. Quantities carry units ("0.75 in", "15.5 mph"). Any missing,
-// unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
-// the key, the value and what was expected.
+// Scenario files (TOML): a case — car, track, speed, duration, model, integrator —
+// each key left out taking its default (scenario_defaults, docs/cli.md "Keys and
+// defaults"). Quantities carry units ("0.75 in", "15.5 mph"). An unknown or
+// ill-typed key, or bad unit, is a ScenarioError naming the file, the key, the
+// value and what was expected.
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
