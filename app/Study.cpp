@@ -429,16 +429,19 @@ StudyPlan loadStudy(const std::string& path) {
     }
     makePoints(plan);
     // Every combination, before anything runs (cross-checks between keys).
+    std::set<std::string> ignored;
     for (size_t i = 0; i < plan.points.size(); ++i) {
         try {
             const Scenario sc = loadPointScenario(plan, i);
             checkScenario(sc);
             checkSwitchesApply(sc);
+            for (const std::string& key : getIgnoredSettings(sc)) ignored.insert(key);
             if (plan.kind == "sweep") checkSweepSpecs(makePointSweeps(plan, sc));
         } catch (const ScenarioError& e) {
             throw ScenarioError(fmt::format("{}: point {} ({}): {}", path, i, describeStudyPoint(plan, i), e.what()));
         }
     }
+    plan.ignoredSettings.assign(ignored.begin(), ignored.end());
     return plan;
 }
 
@@ -452,6 +455,7 @@ Json makeStudyInfo(const StudyPlan& plan) {
     info["kind"] = plan.kind;
     info["combine"] = plan.combine;
     info["point_count"] = plan.points.size();
+    info["ignored_settings"] = plan.ignoredSettings;
     info["rockroll_version"] = kVersion;
     info["git_commit"] = kGitCommit;
     return info;

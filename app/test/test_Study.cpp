@@ -150,3 +150,12 @@ TEST(Study, FilesAreReadWithTheSizeLimitAndRegularFileCheck) {
     EXPECT_NE(e.find("/dev/zero: cannot open base scenario (key 'scenario' of"), std::string::npos) << e;
     EXPECT_NE(e.find("not a regular file"), std::string::npos) << e;
 }
+
+// The keys set that a point's model does not use go into study.json's study info
+// (docs/studies.md): the shipped study runs the reduced model on 70ton-loaded.toml,
+// whose [integrator] table the reduced model does not use.
+TEST(Study, InfoNamesTheSettingsTheModelIgnores) {
+    const StudyPlan plan = loadStudy(std::string(ROCKROLL_SOURCE_DIR) + "/scenarios/studies/side-bearing-clearance.toml");
+    EXPECT_EQ(plan.ignoredSettings, (std::vector<std::string>{"integrator.accuracy", "integrator.method"}));
+    EXPECT_EQ(makeStudyInfo(plan)["ignored_settings"], nlohmann::ordered_json({"integrator.accuracy", "integrator.method"}));
+}
