@@ -1,5 +1,8 @@
 #include "scenarios/ModelRegistry.h"
 
+#include "mbmodel/CarParameters.h"
+
+#include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <stdexcept>
@@ -23,10 +26,20 @@ bool ModelDescriptor::usesSetting(std::string_view key) const {
 }
 
 std::vector<std::string> getCommonSettings() {
-    return {"description",  "car.*",         "track.amplitude", "track.rail_length", "track.rails",
-            "track.mirror", "track.file",    "track.taper",     "track.repeat",      "track.measured",
-            "run.speed",    "run.duration",  "run.model",       "run.filter_cutoff", "limits.*",
-            "criteria.*"};
+    return {"description",  "car.base",      "car.file",        "car.name",          "track.amplitude",
+            "track.rail_length", "track.rails", "track.mirror", "track.file",        "track.taper",
+            "track.repeat", "track.measured", "run.speed",      "run.duration",      "run.model",
+            "run.filter_cutoff", "limits.*",  "criteria.*"};
+}
+
+std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unused) {
+    for (std::string_view key : unused)
+        if (!findCarParameter(key)) throw std::logic_error(fmt::format("getCarSettings: no car parameter '{}'", key));
+    std::vector<std::string> keys;
+    for (const CarParameterInfo& info : getCarParameterTable())
+        if (std::find(unused.begin(), unused.end(), std::string_view(info.key)) == unused.end())
+            keys.push_back(std::string("car.") + info.key);
+    return keys;
 }
 
 const ModelRegistry& ModelRegistry::get() {

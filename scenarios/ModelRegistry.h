@@ -56,9 +56,18 @@ struct ModelDescriptor {
     bool usesSetting(std::string_view key) const;
 };
 
-/// The keys every model uses: the description, the car, the track but its entry, the run
-/// but its output rate, the run limits and the criteria.
+/// The keys every model uses: the description, how the car is named (car.base, car.file,
+/// car.name), the track but its entry, the run but its output rate, the run limits and the
+/// criteria. The car's parameters are each model's own (getCarSettings).
 std::vector<std::string> getCommonSettings();
+/// "car.<key>" of every car parameter but `unused` (keys of getCarParameterTable();
+/// std::logic_error for a key that is none).
+std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unused);
+/// The car parameters of the full car's three-dimensional truck and body alone: pitch and
+/// yaw, the truck spacing, and the center plate's yaw friction and rim (mbmodel/Truck.cpp).
+inline const std::vector<std::string_view> kFullCarOnlyParameters{
+    "pitch_inertia", "yaw_inertia", "truck_spacing", "center_plate_friction", "center_plate_yaw_bristle_angle",
+    "center_plate_rim_points"};
 
 class ModelRegistry {
 public:

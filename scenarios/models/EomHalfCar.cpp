@@ -47,6 +47,8 @@ ModelDescriptor describeEomHalfCarModel() {
     // CVODE BDF at the scenario's accuracy; its own method and step control (bespoke/EomSimulation.h).
     d.settings = getCommonSettings();
     for (const char* key : {"run.output_rate", "integrator.accuracy", "eom.*"}) d.settings.emplace_back(key);
+    const std::vector<std::string> car = getCarSettings(kFullCarOnlyParameters);  // a half car: no pitch, no yaw
+    d.settings.insert(d.settings.end(), car.begin(), car.end());
     d.make = [](const Scenario& sc, const TrackMotion& motion) {
         return std::unique_ptr<TimeDomainModel>(std::make_unique<EomTimeDomainModel>(makeScenarioEomModel(sc, motion)));
     };

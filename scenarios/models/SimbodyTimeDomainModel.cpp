@@ -40,6 +40,10 @@ ModelDescriptor describeSimbodyCar(std::string name, std::string description) {
     d.description = std::move(description);
     d.settings = getCommonSettings();
     for (const char* key : {"run.output_rate", "integrator.*", "attribution.*"}) d.settings.emplace_back(key);
+    // The half car's truck is two-dimensional: no pitch, no yaw (mbmodel/Truck.cpp).
+    const std::vector<std::string> car = getCarSettings(
+        std::is_same_v<Car, FullCarModel> ? std::vector<std::string_view>{} : kFullCarOnlyParameters);
+    d.settings.insert(d.settings.end(), car.begin(), car.end());
     d.makeMultibody = [](const CarParameters& car, const TrackInput& track, const ModelOptions& options) {
         return std::unique_ptr<RockingModel>(std::make_unique<Car>(car, track, options));
     };
