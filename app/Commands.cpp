@@ -195,7 +195,11 @@ int runCommand(const RunOptions& o) {
     const bool replacing = defaultOut && isRunOutput(outPath);
     OutputDirectory dir(outPath, o.force || replacing,
                         defaultOut ? "output directory (the default; choose one with --out)" : "--out");
-    checkSwitchesApply(sc);  // a refused setting is an error, not also an ignored one
+    try {
+        checkSwitchesApply(sc);  // a refused setting is an error, not also an ignored one
+    } catch (const ScenarioError& e) {
+        rethrowNamingFlag(e, parseSets(o.sets));
+    }
     reportIgnoredSettings(sc);
     const ScenarioRun run = runScenario(sc);
 

@@ -369,6 +369,7 @@ TEST(CliWorkflow, AModelNamesTheSettingsItIgnores) {
     const CliOutcome refused = runRockroll(dir, "run '" + kScenario + "' --model reduced --set run.output_rate=\"500 Hz\" "
                                                 "--duration-s 0.2 --out red500");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--set \"run.output_rate=500 Hz\": "), std::string::npos) << refused.err;
     EXPECT_NE(refused.err.find("key 'run.output_rate' = 500 Hz: expected 200 Hz for model \"reduced\""),
               std::string::npos) << refused.err;
     EXPECT_FALSE(fs::exists(dir / "red500"));
