@@ -44,6 +44,21 @@ std::vector<ScenarioOverride> parseSets(const std::vector<std::string>& sets) {
     return overrides;
 }
 
+/// Names on stderr the keys the scenario sets that its model does not use (also recorded
+/// as the provenance's ignored_settings; docs/cli.md, "Which model uses which key").
+void reportIgnoredSettings(const Scenario& sc) {
+    const std::vector<std::string> ignored = getIgnoredSettings(sc);
+    if (!ignored.empty())
+        fmt::print(stderr, "rockroll: model \"{}\" does not use {} (set in {} or by --set): ignored\n", sc.model,
+                   fmt::join(ignored, ", "), sc.source);
+}
+
+/// A directory a run wrote before: it holds a summary.json.
+bool isRunOutput(const fs::path& dir) {
+    std::error_code ec;
+    return fs::is_directory(dir, ec) && fs::is_regular_file(dir / "summary.json", ec);
+}
+
 /// Rethrows a loader error caused by an override with the --set flag that gave it in front.
 [[noreturn]] void rethrowNamingFlag(const ScenarioError& e, const std::vector<ScenarioOverride>& overrides) {
     for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
@@ -173,14 +188,29 @@ int runCommand(const RunOptions& o) {
     if (o.durationS) sc.run.duration = *o.durationS;
     if (o.maxWallS) sc.run.limits.maxWallTime = *o.maxWallS;
     const std::string stem = fs::path(o.fromSummary ? sc.source : o.scenario).stem().string();
-    OutputDirectory dir(o.outDir.empty() ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir),
-                        o.force, o.outDir.empty() ? "output directory (the default; choose one with --out)" : "--out");
+    // The default directory holds the latest run of its scenario and model: a previous run's
+    // output there is replaced (and said so); a directory named with --out needs --force.
+    const bool defaultOut = o.outDir.empty();
+    const fs::path outPath = defaultOut ? fs::path("out") / fmt::format("{}-{}", stem, sc.model) : fs::path(o.outDir);
+    const bool replacing = defaultOut && isRunOutput(outPath);
+    OutputDirectory dir(outPath, o.force || replacing,
+                        defaultOut ? "output directory (the default; choose one with --out)" : "--out");
+    try {
+        checkSwitchesApply(sc);  // a refused setting is an error, not also an ignored one
+    } catch (const ScenarioError& e) {
+        rethrowNamingFlag(e, parseSets(o.sets));
+    }
+    reportIgnoredSettings(sc);
     const ScenarioRun run = runScenario(sc);
 
     const nlohmann::ordered_json j = makeRunJson(run, sc, getCommandLine());
     dir.write("history.csv", [&](std::ostream& out) { writeHistoryCsv(out, run.result.history); });
     dir.writeJson("summary.json", j);
     dir.commit();
+    if (replacing)
+        fmt::print(stderr, "rockroll: replaced the previous run in {} (the default output directory; --out DIR keeps a "
+                           "run elsewhere)\n",
+                   outPath.string());
 
     if (o.json) {
         fmt::print("{}\n", j.dump());
@@ -267,6 +297,12 @@ int sweepCommand(const SweepOptions& o) {
         throw ScenarioError("--resume: expected --out DIR, the output directory of the interrupted sweep");
     const std::vector<SweepSpec> specs = makeSweepSpecs(bases, o);
     checkSweepSpecs(specs);
+    for (const Scenario& sc : bases) {
+        Scenario asRun = sc;
+        if (o.model) asRun.model = *o.model;
+        checkSwitchesApply(asRun);
+        reportIgnoredSettings(asRun);
+    }
     std::optional<OutputDirectory> dir;
     if (!o.outDir.empty()) dir.emplace(o.outDir, o.force, JournaledOutput{o.resume});
     // Each finished speed goes into the journal, so that --resume continues (app/Journal.h).

@@ -2,6 +2,9 @@
 #include "mbmodel/DataFiles.h"
 
 #include "app/BuildInfo.h"
+#include "scenarios/ScenarioRun.h"
+
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -46,7 +49,7 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
     p["integrator"] = {{"method", sc.run.integrator.method},
                        {"accuracy", sc.run.integrator.accuracy},
                        {"max_step_s", sc.run.integrator.maxStepSize},
-                       {"output_rate_hz", sc.run.outputRate}};
+                       {"output_rate_hz", getRecordedOutputRate(sc)}};
     p["car_base"] = sc.car.name;
     nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
     for (const auto& [key, text] : sc.carOverrides) overrides[key] = text;
@@ -64,6 +67,9 @@ nlohmann::ordered_json makeProvenance(const Scenario& sc, const std::string& com
     }
     p["car_parameters"] = params;
     p["scenario_toml"] = formatScenarioToml(sc);
+    // What the scenario file and --set gave, and which of those the model does not use.
+    p["settings_set"] = sc.settingsSet;
+    p["ignored_settings"] = getIgnoredSettings(sc);
     return p;
 }
 
@@ -120,6 +126,25 @@ Scenario loadScenarioFromSummaryWithOverrides(const std::string& path, const std
                 o["value"].is_string())
                 sc.overrides.emplace_back(o["key"].get<std::string>(), o["value"].get<std::string>());
     sc.overrides.insert(sc.overrides.end(), applied.begin(), applied.end());
+    // scenario_toml holds every key; what the user set is settings_set (unknown in a summary
+    // written before it was recorded), with the keys of the new overrides.
+    std::vector<std::string> keys;
+    if (prov->contains("settings_set")) {
+        const nlohmann::json& set = (*prov)["settings_set"];
+        if (!set.is_array())
+            throw ScenarioError(fmt::format("{}: key 'provenance.settings_set' = {}: expected an array of key names",
+                                            path, show(set)));
+        for (const auto& k : set) {
+            if (!k.is_string())
+                throw ScenarioError(fmt::format("{}: key 'provenance.settings_set' holds {}: expected key names (strings)",
+                                                path, show(k)));
+            keys.push_back(k.get<std::string>());
+        }
+    }
+    for (const auto& [key, text] : applied) keys.push_back(key);
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    sc.settingsSet = std::move(keys);
     return sc;
 }
 

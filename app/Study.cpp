@@ -25,14 +25,6 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-std::string readText(const std::string& path, const char* what) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ScenarioError(fmt::format("{}: cannot open the {}", path, what));
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 int lineOf(const toml::node& n) { return int(n.source().begin.line); }
 
 /// A value of the study file with its unit split off: "0.25 in" → 0.25, "in".
@@ -267,7 +259,7 @@ std::vector<ScenarioOverride> getPointOverrides(const StudyPlan& plan, size_t i)
 StudyPlan loadStudy(const std::string& path) {
     StudyPlan plan;
     plan.file = path;
-    plan.content = readText(path, "study file");
+    plan.content = readInputFile(path, "study file");  // its size limit and regular-file check
     plan.sha256 = calcSha256(plan.content);
     toml::table root;
     try {
@@ -292,7 +284,8 @@ StudyPlan loadStudy(const std::string& path) {
     };
     const std::string scenario = text("scenario", true, "");
     plan.scenarioPath = (fs::path(path).parent_path() / scenario).lexically_normal().string();
-    plan.scenarioText = readText(plan.scenarioPath, fmt::format("base scenario (key 'scenario' of {})", path).c_str());
+    plan.scenarioText =
+        readInputFile(plan.scenarioPath, fmt::format("base scenario (key 'scenario' of {})", path).c_str());
     plan.kind = text("kind", false, "run");
     if (plan.kind != "run" && plan.kind != "sweep")
         throw ScenarioError(fmt::format("{}:{}: kind = \"{}\": expected \"run\" or \"sweep\"", path,
@@ -436,16 +429,19 @@ StudyPlan loadStudy(const std::string& path) {
     }
     makePoints(plan);
     // Every combination, before anything runs (cross-checks between keys).
+    std::set<std::string> ignored;
     for (size_t i = 0; i < plan.points.size(); ++i) {
         try {
             const Scenario sc = loadPointScenario(plan, i);
             checkScenario(sc);
             checkSwitchesApply(sc);
+            for (const std::string& key : getIgnoredSettings(sc)) ignored.insert(key);
             if (plan.kind == "sweep") checkSweepSpecs(makePointSweeps(plan, sc));
         } catch (const ScenarioError& e) {
             throw ScenarioError(fmt::format("{}: point {} ({}): {}", path, i, describeStudyPoint(plan, i), e.what()));
         }
     }
+    plan.ignoredSettings.assign(ignored.begin(), ignored.end());
     return plan;
 }
 
@@ -459,6 +455,7 @@ Json makeStudyInfo(const StudyPlan& plan) {
     info["kind"] = plan.kind;
     info["combine"] = plan.combine;
     info["point_count"] = plan.points.size();
+    info["ignored_settings"] = plan.ignoredSettings;
     info["rockroll_version"] = kVersion;
     info["git_commit"] = kGitCommit;
     return info;

@@ -48,6 +48,9 @@ struct StudyPlan {
     uint64_t seed = 0;
     /// points[i][k]: the value of varied[k] at point i.
     std::vector<std::vector<StudyValue>> points;
+    /// The keys set (base scenario, [set], [vary]) that the model of some point does not use
+    /// (getIgnoredSettings), sorted; study.json's `study.ignored_settings`.
+    std::vector<std::string> ignoredSettings;
 };
 
 /// Reads and checks a study file: every key, value and combination goes through the

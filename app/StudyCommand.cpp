@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -48,6 +49,9 @@ int studyCommand(const StudyOptions& o) {
     const auto [k, n] = parseShard(o.shard);
     if (o.outDir.empty()) throw ScenarioError("study: expected --out DIR");
     const StudyPlan plan = loadStudy(o.study);
+    if (!plan.ignoredSettings.empty())
+        fmt::print(stderr, "study: the model does not use {} (set in {} or its base scenario): ignored\n",
+                   fmt::join(plan.ignoredSettings, ", "), o.study);
     std::vector<size_t> mine;
     for (size_t i = 0; i < plan.points.size(); ++i)
         if (i % n == k - 1) mine.push_back(i);

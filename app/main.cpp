@@ -103,7 +103,8 @@ int main(int argc, char** argv) {
         ->check(inRange("track.amplitude", "in"));
     runCmd->add_option("--duration-s", run.durationS, "simulated time [s]")->check(inRange("run.duration", "s"));
     addCommonOptions(runCmd, run,
-                     "output directory: history.csv, summary.json (default out/<scenario>-<model>)");
+                     "output directory: history.csv, summary.json (default out/<scenario>-<model>, where a "
+                     "rerun replaces the earlier run)");
     runCmd->add_option("--max-wall-s", run.maxWallS, "wall-time limit; past it the run fails (exit 3) [s]")
         ->check(inRange("limits.max_wall_time", "s"));
     runCmd->add_flag("--json", run.json, "print exactly one JSON summary object on stdout");

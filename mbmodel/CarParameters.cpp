@@ -13,9 +13,8 @@ namespace {
 const std::vector<CarParameterInfo> kTable = [] {
     using P = CarParameters;
     // The values and their sources are data: scenarios/cars/*.toml.
-    auto e = [](const char* key, double P::*m, Dimension d, const char* unit, bool mayBeZero = false) {
-        return CarParameterInfo{key, m, d, unit, mayBeZero};
-    };
+    auto e = [](const char* key, double P::*m, Dimension d, const char* unit, bool mayBeZero = false,
+                bool integer = false) { return CarParameterInfo{key, m, d, unit, mayBeZero, integer}; };
     return std::vector<CarParameterInfo>{
         e("body_and_bolsters_weight", &P::bodyAndBolstersWeight, Dimension::Force, "lb"),
         e("wheelset_weight", &P::wheelsetWeight, Dimension::Force, "lb"),
@@ -58,7 +57,7 @@ const std::vector<CarParameterInfo> kTable = [] {
         e("friction_bristle_damping_ratio", &P::frictionBristleDampingRatio, Dimension::Dimensionless, "", true),
         e("center_plate_friction", &P::centerPlateFriction, Dimension::Dimensionless, "", true),
         e("center_plate_yaw_bristle_angle", &P::centerPlateYawBristleAngle, Dimension::Angle, "deg"),
-        e("center_plate_rim_points", &P::centerPlateRimPoints, Dimension::Dimensionless, ""),
+        e("center_plate_rim_points", &P::centerPlateRimPoints, Dimension::Dimensionless, "", false, true),
     };
 }();
 

@@ -69,6 +69,7 @@ struct CarParameterInfo {
     units::Dimension dimension;
     const char* displayUnit;   ///< unit used in docs and printouts
     bool mayBeZero = false;    ///< zero is meaningful (no clearance, no damping, no friction)
+    bool integer = false;      ///< a count: whole numbers only (center_plate_rim_points)
 };
 
 const std::vector<CarParameterInfo>& getCarParameterTable();

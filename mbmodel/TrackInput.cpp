@@ -75,6 +75,9 @@ std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::
     if (text.size() > kMaxTrackFileBytes)
         throw std::invalid_argument(fmt::format("{}: {} bytes; expected at most {} bytes ({} MiB) of track CSV",
                                                 source, text.size(), kMaxTrackFileBytes, kMaxTrackFileBytes >> 20));
+    // A spreadsheet's UTF-8 byte-order mark is not part of the header (CRLF ends are trimmed
+    // with the cells; test MeasuredTrack.SpreadsheetCsvWithByteOrderMarkAndCrlfRuns).
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     std::istringstream in{std::string(text)};
     int lineNo = 0;
     for (std::string raw; std::getline(in, raw);) {

@@ -41,9 +41,33 @@ struct ModelDescriptor {
         makeMultibody;
     /// The model has a massless truck (report §2.2), so [reduced] truck_weight applies.
     bool masslessTruck = false;
+    /// The scenario keys the model uses: full dotted keys ("integrator.accuracy") or a
+    /// whole table ("car.*"); getCommonSettings() plus the model's own. A key a scenario
+    /// sets (Scenario::settingsSet) outside this list is reported as ignored
+    /// (getIgnoredSettings; docs/cli.md, "Which model uses which key").
+    std::vector<std::string> settings;
+    /// The rate the model records at whatever run.output_rate says [Hz] (the reduced model:
+    /// every RK4 step, 200 Hz); 0: it follows run.output_rate. A scenario that sets another
+    /// run.output_rate for it is refused (checkSwitchesApply).
+    double fixedOutputRateHz = 0;
 
     bool isMultibody() const { return bool(makeMultibody); }
+    /// Whether `key` (a full dotted key) is one of `settings`.
+    bool usesSetting(std::string_view key) const;
 };
+
+/// The keys every model uses: the description, how the car is named (car.base, car.file,
+/// car.name), the track but its entry, the run but its output rate, the run limits and the
+/// criteria. The car's parameters are each model's own (getCarSettings).
+std::vector<std::string> getCommonSettings();
+/// "car.<key>" of every car parameter but `unused` (keys of getCarParameterTable();
+/// std::logic_error for a key that is none).
+std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unused);
+/// The car parameters of the full car's three-dimensional truck and body alone: pitch and
+/// yaw, the truck spacing, and the center plate's yaw friction and rim (mbmodel/Truck.cpp).
+inline const std::vector<std::string_view> kFullCarOnlyParameters{
+    "pitch_inertia", "yaw_inertia", "truck_spacing", "center_plate_friction", "center_plate_yaw_bristle_angle",
+    "center_plate_rim_points"};
 
 class ModelRegistry {
 public:

@@ -53,7 +53,8 @@ std::vector<ValueRange> makeValueRanges() {
     };
     // Car parameters: finite, and positive unless zero means something (no clearance, no damping).
     for (const CarParameterInfo& info : getCarParameterTable())
-        r.push_back({std::string("car.") + info.key, info.dimension, 0, inf, !info.mayBeZero, true, info.displayUnit});
+        r.push_back({std::string("car.") + info.key, info.dimension, 0, inf, !info.mayBeZero, true, info.displayUnit,
+                     info.integer});
     return r;
 }
 
@@ -310,10 +311,11 @@ CarParameters readCarFile(const toml::table& root, const std::string& src) {
 }
 
 void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
-    TableReader car(getTable(root, "car", src, true), src, "car.");
-    const bool inline_ = !car.has("base") && !car.has("file");
+    const toml::table* table = getTable(root, "car", src, false);
+    TableReader car(table, src, "car.");
+    const bool inline_ = !car.has("base") && !car.has("file") && car.has("name");
     if (car.has("base") && car.has("file"))
-        car.fail("file", TableReader::describe(*root.get("car")->as_table()->get("file")),
+        car.fail("file", TableReader::describe(*table->get("file")),
                  "either 'base' (a built-in car) or 'file' (a car file), not both");
     if (car.has("base")) {
         const auto names = getCarNames();
@@ -327,17 +329,17 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
         } catch (const ScenarioError& e) {
             throw ScenarioError(fmt::format("{}: key 'car.file' = \"{}\": {}", src, given.string(), e.what()));
         }
-    } else {
+    } else if (inline_) {
         // A complete car inline (as formatScenarioToml writes it): its name and every parameter.
         sc.car = CarParameters{};
-        if (!car.has("name"))
-            car.fail("base", "(missing)", "'base' (a built-in car), 'file' (a car file) or a complete car with 'name'");
+    } else {
+        sc.car = makeCarParameters(scenario_defaults::kCarBase);
     }
     if (car.has("name")) {  // names the car (with base or file: a variant of it)
         sc.car.name = car.getText("name", "");
         if (sc.car.name.empty()) car.fail("name", "\"\"", "a non-empty string");
     }
-    for (const auto& [k, v] : *root.get("car")->as_table()) {
+    for (const auto& [k, v] : table ? *table : toml::table{}) {
         const CarParameterInfo* info = findCarParameter(k.str());
         if (!info) continue;  // base/file/name were read above; rejectUnknown reports the rest
         const double value = car.getQuantity(info->key, info->dimension);
@@ -354,7 +356,7 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
 
 void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
-    const toml::table* t = getTable(root, "track", src, true);
+    const toml::table* t = getTable(root, "track", src, false);
     TableReader track(t, src, "track.");
     const bool measured = track.has("file") || track.has("measured");
     const std::string file = track.getText("file", "");  // its type first
@@ -368,8 +370,10 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
                 track.fail(sine, TableReader::describe(*t->get(sine)),
                            "no rectified-sine key with 'file' (the measured track replaces the sine)");
     // The declared ranges (getValueRange) hold for the sine's keys; a measured track needs none of them.
-    sc.track.amplitude = measured ? track.getRanged("amplitude", 0.0) : track.getRanged("amplitude");
-    sc.track.railLength = measured ? track.getRanged("rail_length", sc.track.railLength) : track.getRanged("rail_length");
+    sc.track.amplitude = track.getRanged(
+        "amplitude", measured ? 0.0 : units::parseQuantity(scenario_defaults::kAmplitude, Dimension::Length));
+    sc.track.railLength =
+        track.getRanged("rail_length", units::parseQuantity(scenario_defaults::kRailLength, Dimension::Length));
     sc.track.rails = int(track.getRanged("rails", 0));
     sc.track.mirror = track.getBool("mirror", false);
     sc.entry = track.getString("entry", {"lead", "synchronized"}, "lead") == "lead" ? TrackEntry::Lead
@@ -430,23 +434,24 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
 
 void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
     using units::Dimension;
-    TableReader run(getTable(root, "run", src, true), src, "run.");
-    sc.speed = run.getRanged("speed");
-    sc.run.duration = run.getRanged("duration");
+    namespace d = scenario_defaults;
+    TableReader run(getTable(root, "run", src, false), src, "run.");
+    sc.speed = run.getRanged("speed", units::parseQuantity(d::kSpeed, Dimension::Speed));
+    sc.run.duration = run.getRanged("duration", units::parseQuantity(d::kDuration, Dimension::Time));
     const std::vector<std::string> models = ModelRegistry::get().getNames();
-    sc.model = run.getString("model", std::set<std::string>(models.begin(), models.end()));
-    sc.run.outputRate = run.getRanged("output_rate", 500.0);
-    sc.filterCutoffHz = run.getRanged("filter_cutoff", 20.0);
+    sc.model = run.getString("model", std::set<std::string>(models.begin(), models.end()), d::kModel);
+    sc.run.outputRate = run.getRanged("output_rate", d::kOutputRateHz);
+    sc.filterCutoffHz = run.getRanged("filter_cutoff", d::kFilterCutoffHz);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
         run.fail("filter_cutoff", fmt::format("{} Hz", sc.filterCutoffHz),
                  fmt::format("a cut-off below the Nyquist frequency, half the output rate ({} Hz)", sc.run.outputRate / 2));
     checkSampleCount(run.locate("duration"), sc.run.duration, sc.run.outputRate);
     run.rejectUnknown();
 
-    TableReader integ(getTable(root, "integrator", src, true), src, "integrator.");
+    TableReader integ(getTable(root, "integrator", src, false), src, "integrator.");
     const auto methods = getIntegratorNames();
-    sc.run.integrator.method = integ.getString("method", {methods.begin(), methods.end()});
-    sc.run.integrator.accuracy = integ.getRanged("accuracy");
+    sc.run.integrator.method = integ.getString("method", {methods.begin(), methods.end()}, d::kIntegratorMethod);
+    sc.run.integrator.accuracy = integ.getRanged("accuracy", d::kAccuracy);
     sc.run.integrator.maxStepSize = integ.getRanged("max_step", 0.0);
     integ.rejectUnknown();
 }
@@ -594,6 +599,19 @@ std::string resolveScenarioKey(const std::string& key, OverrideKeys mode, const 
 }
 
 namespace {
+/// The dotted keys of a scenario document ("description", "run.speed", "track.measured"), sorted.
+std::vector<std::string> listKeys(const toml::table& root) {
+    std::vector<std::string> keys;
+    for (const auto& [name, node] : root) {
+        if (const toml::table* table = node.as_table())
+            for (const auto& [key, value] : *table) keys.push_back(fmt::format("{}.{}", name.str(), key.str()));
+        else
+            keys.emplace_back(name.str());
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+}
+
 /// `root` with `overrides` applied: each value text becomes the TOML value it spells, or a string.
 void applyOverrides(toml::table& root, const std::vector<ScenarioOverride>& overrides, OverrideKeys mode,
                     const std::string& source, Scenario& sc) {
@@ -642,8 +660,8 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     readReduced(root, source, sc);
     readAttribution(root, source, sc);
     readCriteria(root, source, sc);
-    for (const char* t : {"car", "track", "run", "integrator"}) top.require(t);
-    top.rejectUnknown({"eom", "limits", "reduced", "attribution", "criteria"});
+    top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "criteria"});
+    sc.settingsSet = listKeys(root);
     return sc;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// Scenario files (TOML): a complete case — car, track, speed, duration, model,
-// integrator. Quantities carry units ("0.75 in", "15.5 mph"). Any missing,
-// unknown or ill-typed key, or bad unit, is a ScenarioError naming the file,
-// the key, the value and what was expected.
+// Scenario files (TOML): a case — car, track, speed, duration, model, integrator —
+// each key left out taking its default (scenario_defaults, docs/cli.md "Keys and
+// defaults"). Quantities carry units ("0.75 in", "15.5 mph"). An unknown or
+// ill-typed key, or bad unit, is a ScenarioError naming the file, the key, the
+// value and what was expected.
 #include "bespoke/EomHalfCarModel.h"
 #include "bespoke/ReducedHalfCarModel.h"
 #include "mbmodel/CarParameters.h"
@@ -22,6 +23,11 @@ struct Scenario {
     std::string sourceSha256;    ///< SHA-256 of the scenario file's bytes (hex)
     /// [car] parameters given in the file, key → the text given (e.g. "0.25 in").
     std::vector<std::pair<std::string, std::string>> carOverrides;
+    /// Every dotted key the scenario file holds or an override gave ("run.speed",
+    /// "integrator.accuracy", "track.measured"), sorted: what the user set, as opposed
+    /// to the defaults of the keys left out (docs/cli.md, "Keys and defaults").
+    /// A model's unused settings are found among these (getIgnoredSettings).
+    std::vector<std::string> settingsSet;
     /// Overrides applied on top of the file (applyScenarioOverrides), in the order given:
     /// full dotted key → the value text given (e.g. {"car.side_bearing_clearance", "0.25 in"}).
     std::vector<std::pair<std::string, std::string>> overrides;
@@ -39,6 +45,21 @@ struct Scenario {
     AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
     CriteriaLimits criteria;           ///< [criteria] table: limits of the summary's criteria
 };
+
+/// The default of each key a scenario leaves out: the values of scenarios/70ton-loaded.toml
+/// (docs/cli.md, "Keys and defaults"; test ScenarioLoader.AnEmptyScenarioIsTheDefaultCase).
+namespace scenario_defaults {
+inline constexpr const char* kCarBase = "70ton-loaded";
+inline constexpr const char* kAmplitude = "0.75 in";
+inline constexpr const char* kRailLength = "39 ft";
+inline constexpr const char* kSpeed = "16.5 mph";
+inline constexpr const char* kDuration = "20 s";
+inline constexpr const char* kModel = "fullcar";
+inline constexpr double kOutputRateHz = 500;
+inline constexpr double kFilterCutoffHz = 20;
+inline constexpr const char* kIntegratorMethod = "cpodes";
+inline constexpr double kAccuracy = 1e-4;
+}  // namespace scenario_defaults
 
 class ScenarioError : public std::runtime_error {
 public:

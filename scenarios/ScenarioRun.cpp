@@ -59,6 +59,12 @@ void checkSwitchesApply(const Scenario& sc) {
                                         "(the other models always carry the truck's weight)",
                                         sc.source, fmt::join(massless, " or "), sc.model));
     }
+    if (d.fixedOutputRateHz > 0 && sc.run.outputRate != d.fixedOutputRateHz &&
+        std::binary_search(sc.settingsSet.begin(), sc.settingsSet.end(), "run.output_rate"))
+        throw ScenarioError(fmt::format("{}: key 'run.output_rate' = {} Hz: expected {} Hz for model \"{}\", which records "
+                                        "every step of its fixed time step, or the key left out (docs/cli.md, \"Which "
+                                        "model uses which key\")",
+                                        sc.source, sc.run.outputRate, d.fixedOutputRateHz, sc.model));
     const std::string multibody = fmt::format("{}", fmt::join(registry.getMultibodyNames(), " or "));
     if (!d.isMultibody() && !sc.attribution.truckGravity)
         throw ScenarioError(fmt::format("{}: key 'attribution.truck_gravity' = false: expected model {}, not \"{}\"",
@@ -68,9 +74,30 @@ void checkSwitchesApply(const Scenario& sc) {
                                         sc.source, sc.attribution.truckMassScale, multibody, sc.model));
 }
 
-ScenarioRun runScenario(const Scenario& sc, const RunStart& start) {
+std::vector<std::string> getIgnoredSettings(const Scenario& sc) {
+    const ModelDescriptor& d = getScenarioModel(sc);
+    std::vector<std::string> ignored;
+    for (const std::string& key : sc.settingsSet)
+        if (!d.usesSetting(key)) ignored.push_back(key);
+    return ignored;
+}
+
+double getRecordedOutputRate(const Scenario& sc) {
+    const ModelDescriptor& d = getScenarioModel(sc);
+    return d.fixedOutputRateHz > 0 ? d.fixedOutputRateHz : sc.run.outputRate;
+}
+
+ScenarioRun runScenario(const Scenario& given, const RunStart& start) {
+    checkSwitchesApply(given);
+    // The checks (the filter below the Nyquist frequency, the memory estimate) at the rate recorded.
+    Scenario resolved;
+    const bool fixedRate = getRecordedOutputRate(given) != given.run.outputRate;
+    if (fixedRate) {
+        resolved = given;
+        resolved.run.outputRate = getRecordedOutputRate(given);
+    }
+    const Scenario& sc = fixedRate ? resolved : given;
     checkScenario(sc);  // command-line options and Python keywords change a loaded scenario
-    checkSwitchesApply(sc);
     const ModelDescriptor& d = getScenarioModel(sc);
     if (start.from && start.from->model != d.name)
         throw ScenarioError(fmt::format("{}: cannot continue a \"{}\" state with model \"{}\"", sc.source,

@@ -37,9 +37,17 @@ std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunSta
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const TrackMotion& motion);
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start = {});
 ScenarioRun runScenario(const Scenario& sc, const RunStart& start = {});
-/// ScenarioError if sc.model is not a model of the registry, or a [reduced] or
+/// ScenarioError if sc.model is not a model of the registry, a [reduced] or
 /// [attribution] switch is set for a model it does not apply to (it would be
-/// silently ignored). runScenario calls it; so does runSweeps, before its threads start.
+/// silently ignored), or run.output_rate is set (Scenario::settingsSet) to a rate the
+/// model does not record at (ModelDescriptor::fixedOutputRateHz). runScenario calls it;
+/// so does runSweeps, before its threads start.
 void checkSwitchesApply(const Scenario& sc);
+/// The keys the scenario sets (Scenario::settingsSet) that its model does not use
+/// (ModelDescriptor::settings), in settingsSet's order; the command line prints them and
+/// the provenance records them as `ignored_settings` (docs/outputs.md).
+std::vector<std::string> getIgnoredSettings(const Scenario& sc);
+/// The rate the run records at [Hz]: run.output_rate, or the model's fixed rate.
+double getRecordedOutputRate(const Scenario& sc);
 
 }  // namespace rockroll

@@ -307,3 +307,116 @@ TEST(CliWorkflow, InterruptLeavesNothingHalfWritten) {
         EXPECT_NE(readTextFile(dir / "stderr.txt").find("interrupted"), std::string::npos);
     }
 }
+
+// A scenario of a car, an amplitude and a speed runs: every other key takes its default
+// (docs/cli.md, "Keys and defaults"), and --model needs no run.model in the file.
+TEST(CliWorkflow, AMinimalScenarioRuns) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    std::ofstream(dir / "five.toml") << "[car]\nbase = \"70ton-loaded\"\n[track]\namplitude = \"0.75 in\"\n[run]\n"
+                                        "speed = \"15 mph\"\n";
+    const CliOutcome full = runRockroll(dir, "run five.toml --duration-s 0.3");
+    ASSERT_EQ(full.exitCode, 0) << full.err;
+    EXPECT_EQ(full.err, "");  // nothing set that the model does not use
+    const nlohmann::json j = nlohmann::json::parse(readTextFile(dir / "out" / "five-fullcar" / "summary.json"));
+    EXPECT_EQ(j["model"], "fullcar");
+    EXPECT_EQ(j["speed_mph"], 15.0);
+    EXPECT_EQ(j["amplitude_in"], 0.75);
+    const nlohmann::json& p = j["provenance"];
+    EXPECT_EQ(p["settings_set"], nlohmann::json({"car.base", "run.speed", "track.amplitude"}));
+    EXPECT_EQ(p["ignored_settings"], nlohmann::json::array());
+    EXPECT_EQ(p["integrator"]["method"], "cpodes");
+    EXPECT_EQ(p["integrator"]["accuracy"], 1e-4);
+    EXPECT_EQ(p["integrator"]["output_rate_hz"], 500.0);
+    const auto history = rockroll::test::parseCsvTable(readTextFile(dir / "out" / "five-fullcar" / "history.csv"));
+    const std::vector<double> t = history.numbers("t_s");
+    ASSERT_EQ(t.size(), 151u);  // 0.3 s at 500 Hz
+    EXPECT_NEAR(t[1] - t[0], 0.002, 1e-12);
+
+    const CliOutcome reduced = runRockroll(dir, "run five.toml --model reduced --duration-s 0.3");
+    ASSERT_EQ(reduced.exitCode, 0) << reduced.err;
+    const nlohmann::json r = nlohmann::json::parse(readTextFile(dir / "out" / "five-reduced" / "summary.json"));
+    EXPECT_EQ(r["model"], "reduced");
+    EXPECT_EQ(r["provenance"]["ignored_settings"], nlohmann::json::array());
+}
+
+// A key the scenario sets that the model does not use is named on stderr and in the
+// provenance's ignored_settings (docs/cli.md, "Which model uses which key"); the reduced
+// model records at its own 200 Hz and refuses another output rate that is set.
+TEST(CliWorkflow, AModelNamesTheSettingsItIgnores) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    const CliOutcome o =
+        runRockroll(dir, "run '" + kScenario + "' --model reduced --set integrator.accuracy=1e-6 --duration-s 0.5 --out red");
+    ASSERT_EQ(o.exitCode, 0) << o.err;
+    EXPECT_NE(o.err.find("model \"reduced\" does not use integrator.accuracy, integrator.method"), std::string::npos)
+        << o.err;
+    const nlohmann::json j = nlohmann::json::parse(readTextFile(dir / "red" / "summary.json"));
+    const nlohmann::json& p = j["provenance"];
+    EXPECT_EQ(p["ignored_settings"], nlohmann::json({"integrator.accuracy", "integrator.method"}));
+    EXPECT_EQ(p["integrator"]["output_rate_hz"], 200.0);
+    const std::vector<double> t =
+        rockroll::test::parseCsvTable(readTextFile(dir / "red" / "history.csv")).numbers("t_s");
+    ASSERT_EQ(t.size(), 101u);  // every 0.005 s step of 0.5 s
+    EXPECT_NEAR(t[1] - t[0], 0.005, 1e-12);
+
+    // Rerun from its summary: the same keys count as set, so the same ones are ignored.
+    const CliOutcome again = runRockroll(dir, "run --from-summary red/summary.json --out red-again");
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(dir / "red-again" / "summary.json"))["provenance"]["ignored_settings"],
+              p["ignored_settings"]);
+    EXPECT_EQ(readTextFile(dir / "red-again" / "history.csv"), readTextFile(dir / "red" / "history.csv"));
+
+    // The half car uses the integrator but not [eom] nor track.entry.
+    const CliOutcome half = runRockroll(dir, "run '" + kScenario + "' --model halfcar --set eom.small_angles=true "
+                                             "--set track.entry=synchronized --duration-s 0.2 --out half");
+    ASSERT_EQ(half.exitCode, 0) << half.err;
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(dir / "half" / "summary.json"))["provenance"]["ignored_settings"],
+              nlohmann::json({"eom.small_angles", "track.entry"}));
+    EXPECT_NE(half.err.find("does not use eom.small_angles, track.entry"), std::string::npos) << half.err;
+
+    // An output rate set for the reduced model: 200 Hz runs, another is refused.
+    EXPECT_EQ(runRockroll(dir, "run '" + kScenario + "' --model reduced --set run.output_rate=\"200 Hz\" "
+                               "--duration-s 0.2 --out red200").exitCode, 0);
+    const CliOutcome refused = runRockroll(dir, "run '" + kScenario + "' --model reduced --set run.output_rate=\"500 Hz\" "
+                                                "--duration-s 0.2 --out red500");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--set \"run.output_rate=500 Hz\": "), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("key 'run.output_rate' = 500 Hz: expected 200 Hz for model \"reduced\""),
+              std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "red500"));
+}
+
+// A rerun into the default output directory (out/<scenario>-<model>) replaces the earlier run
+// there and says so; a directory named with --out stays protected without --force.
+TEST(CliWorkflow, ARerunReplacesTheDefaultOutputButNotANamedOne) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    std::ofstream(dir / "s.toml") << "[run]\nspeed = \"15 mph\"\n";
+    const fs::path out = dir / "out" / "s-reduced";
+    ASSERT_EQ(runRockroll(dir, "run s.toml --model reduced --duration-s 0.2").exitCode, 0);
+    const std::string first = readTextFile(out / "summary.json");
+    const CliOutcome rerun = runRockroll(dir, "run s.toml --model reduced --duration-s 0.2 --speed-mph 14");
+    ASSERT_EQ(rerun.exitCode, 0) << rerun.err;
+    EXPECT_NE(rerun.err.find("replaced the previous run in out/s-reduced"), std::string::npos) << rerun.err;
+    const std::string second = readTextFile(out / "summary.json");
+    EXPECT_NE(second, first);
+    EXPECT_EQ(nlohmann::json::parse(second)["speed_mph"], 14.0);
+    EXPECT_FALSE(fs::exists(dir / "out" / "s-reduced.partial"));
+    // A default directory that is not an earlier run's output is left alone.
+    fs::create_directories(dir / "out" / "s-eom");
+    std::ofstream(dir / "out" / "s-eom" / "notes.txt") << "mine\n";
+    const CliOutcome notOurs = runRockroll(dir, "run s.toml --model eom --duration-s 0.2");
+    EXPECT_EQ(notOurs.exitCode, 2) << notOurs.err;
+    EXPECT_TRUE(fs::exists(dir / "out" / "s-eom" / "notes.txt"));
+
+    // --out DIR: refused the second time, replaced with --force.
+    const std::string named = "run s.toml --model reduced --duration-s 0.2 --out mine";
+    ASSERT_EQ(runRockroll(dir, named).exitCode, 0);
+    const std::string kept = readTextFile(dir / "mine" / "summary.json");
+    const CliOutcome refused = runRockroll(dir, named + " --speed-mph 14");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--out mine: the directory exists and is not empty"), std::string::npos) << refused.err;
+    EXPECT_EQ(readTextFile(dir / "mine" / "summary.json"), kept);
+    const CliOutcome forced = runRockroll(dir, named + " --speed-mph 14 --force");
+    ASSERT_EQ(forced.exitCode, 0) << forced.err;
+    EXPECT_EQ(forced.err.find("replaced the previous run"), std::string::npos) << forced.err;
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(dir / "mine" / "summary.json"))["speed_mph"], 14.0);
+}

@@ -130,3 +130,32 @@ TEST(Study, RecordsHavePointVariedColumnsStatusThenSummary) {
     EXPECT_EQ(keys, (std::vector<std::string>{"point", "run.speed_mph", "status", "max_roll_deg"}));
     EXPECT_EQ(records[1]["status"], "failed");
 }
+
+// A study file and its base scenario are read as every input file is (readInputFile;
+// docs/cli.md, "Input size limits"): a folder or a device is refused as not a regular file,
+// a file over 16 MiB from its size, each naming the path.
+TEST(Study, FilesAreReadWithTheSizeLimitAndRegularFileCheck) {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::makeTestTempDir();
+    fs::create_directory(dir / "folder.toml");
+    std::string e = refusal((dir / "folder.toml").string());
+    EXPECT_NE(e.find("folder.toml: cannot open study file: not a regular file"), std::string::npos) << e;
+    std::ofstream(dir / "huge.toml") << "# padding\n";
+    fs::resize_file(dir / "huge.toml", kMaxScenarioFileBytes + 1);
+    e = refusal((dir / "huge.toml").string());
+    EXPECT_NE(e.find("huge.toml: the study file is 16777217 bytes; expected at most 16777216 bytes"), std::string::npos)
+        << e;
+    std::ofstream(dir / "on-device.toml") << "scenario = \"/dev/zero\"\n";
+    e = refusal((dir / "on-device.toml").string());
+    EXPECT_NE(e.find("/dev/zero: cannot open base scenario (key 'scenario' of"), std::string::npos) << e;
+    EXPECT_NE(e.find("not a regular file"), std::string::npos) << e;
+}
+
+// The keys set that a point's model does not use go into study.json's study info
+// (docs/studies.md): the shipped study runs the reduced model on 70ton-loaded.toml,
+// whose [integrator] table the reduced model does not use.
+TEST(Study, InfoNamesTheSettingsTheModelIgnores) {
+    const StudyPlan plan = loadStudy(std::string(ROCKROLL_SOURCE_DIR) + "/scenarios/studies/side-bearing-clearance.toml");
+    EXPECT_EQ(plan.ignoredSettings, (std::vector<std::string>{"integrator.accuracy", "integrator.method"}));
+    EXPECT_EQ(makeStudyInfo(plan)["ignored_settings"], nlohmann::ordered_json({"integrator.accuracy", "integrator.method"}));
+}

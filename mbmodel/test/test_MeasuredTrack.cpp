@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace rockroll;
 
@@ -115,4 +117,40 @@ TEST(MeasuredTrack, ProvenanceTomlRebuildsTheTrack) {
     const TrackInput a(sc.track), b(again.track);
     for (double s = -1; s < 140; s += 0.37)
         for (int i = 0; i < 2; ++i) EXPECT_EQ(a.calcRails(s).z[i], b.calcRails(s).z[i]) << s;
+}
+
+// A spreadsheet saves CSV with a UTF-8 byte-order mark and CRLF line ends: the shipped
+// staggered table saved so, with its comments or with the header first (as a spreadsheet
+// writes it), reads as the same rows and runs as the shipped file does.
+TEST(MeasuredTrack, SpreadsheetCsvWithByteOrderMarkAndCrlfRuns) {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::makeTestTempDir();
+    std::ifstream in(kScenarios + "/tracks/staggered-0.75in.csv", std::ios::binary);
+    std::string withComments, headerFirst;
+    for (std::string line; std::getline(in, line);) {
+        withComments += line + "\r\n";
+        if (!line.starts_with("#")) headerFirst += line + "\r\n";
+    }
+    const Scenario shipped = loadScenarioFile(kScenarios + "/measured-staggered.toml");
+    std::ifstream scenarioIn(kScenarios + "/measured-staggered.toml");
+    const std::string scenario((std::istreambuf_iterator<char>(scenarioIn)), std::istreambuf_iterator<char>());
+    for (const auto& [name, text] : {std::pair{"comments", withComments}, std::pair{"header-first", headerFirst}}) {
+        SCOPED_TRACE(name);
+        fs::create_directories(dir / name / "tracks");
+        std::ofstream(dir / name / "tracks" / "staggered-0.75in.csv", std::ios::binary) << "\xEF\xBB\xBF" << text;
+        std::ofstream(dir / name / "s.toml") << scenario;
+        Scenario sc = loadScenarioFile((dir / name / "s.toml").string());
+        ASSERT_EQ(sc.track.measured.size(), shipped.track.measured.size());
+        for (size_t i = 0; i < sc.track.measured.size(); ++i) {
+            EXPECT_EQ(sc.track.measured[i].distance, shipped.track.measured[i].distance) << i;
+            EXPECT_EQ(sc.track.measured[i].crossLevel, shipped.track.measured[i].crossLevel) << i;
+            EXPECT_EQ(sc.track.measured[i].profile, shipped.track.measured[i].profile) << i;
+        }
+        sc.model = "reduced";
+        sc.run.duration = 0.5;
+        Scenario reference = shipped;
+        reference.model = "reduced";
+        reference.run.duration = 0.5;
+        EXPECT_EQ(runScenario(sc).result.history.samples, runScenario(reference).result.history.samples);
+    }
 }

@@ -44,6 +44,11 @@ ModelDescriptor describeEomHalfCarModel() {
     ModelDescriptor d;
     d.name = model_names::kEom;
     d.description = "equation-of-motion half car, the Simbody half car's equations written out (report §4.1)";
+    // CVODE BDF at the scenario's accuracy; its own method and step control (bespoke/EomSimulation.h).
+    d.settings = getCommonSettings();
+    for (const char* key : {"run.output_rate", "integrator.accuracy", "eom.*"}) d.settings.emplace_back(key);
+    const std::vector<std::string> car = getCarSettings(kFullCarOnlyParameters);  // a half car: no pitch, no yaw
+    d.settings.insert(d.settings.end(), car.begin(), car.end());
     d.make = [](const Scenario& sc, const TrackMotion& motion) {
         return std::unique_ptr<TimeDomainModel>(std::make_unique<EomTimeDomainModel>(makeScenarioEomModel(sc, motion)));
     };

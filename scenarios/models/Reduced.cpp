@@ -4,6 +4,8 @@
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioLoader.h"
 
+#include <cmath>
+
 namespace rockroll {
 
 namespace {
@@ -26,6 +28,19 @@ ModelDescriptor describeReducedModel() {
     d.name = model_names::kReduced;
     d.description = "the report's reduced half car: massless truck, fixed-step RK4 at 0.005 s (report §2.2)";
     d.masslessTruck = true;
+    d.settings = getCommonSettings();
+    for (const char* key : {"run.output_rate", "reduced.*"}) d.settings.emplace_back(key);
+    // A half car with a massless truck and rigid contacts (report §2.2, bespoke/TruckEquilibrium.h):
+    // no truck inertias, contact stiffnesses or contact damping.
+    std::vector<std::string_view> unused(kFullCarOnlyParameters);
+    for (std::string_view key :
+         {"bolster_roll_inertia", "wheelset_roll_inertia", "wheel_rail_stiffness", "center_plate_stiffness",
+          "side_bearing_stiffness", "contact_dissipation", "wheel_rail_lateral_stiffness",
+          "lateral_contact_damping_ratio", "friction_bristle_damping_ratio"})
+        unused.push_back(key);
+    const std::vector<std::string> car = getCarSettings(unused);
+    d.settings.insert(d.settings.end(), car.begin(), car.end());
+    d.fixedOutputRateHz = std::round(1 / ReducedHalfCarModel::kStep);  // it records every step
     d.make = [](const Scenario& sc, const TrackMotion& motion) {
         return std::unique_ptr<TimeDomainModel>(std::make_unique<ReducedTimeDomainModel>(ReducedHalfCarModel(
             sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.reduced)));

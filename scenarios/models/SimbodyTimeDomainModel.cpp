@@ -38,6 +38,12 @@ ModelDescriptor describeSimbodyCar(std::string name, std::string description) {
     ModelDescriptor d;
     d.name = std::move(name);
     d.description = std::move(description);
+    d.settings = getCommonSettings();
+    for (const char* key : {"run.output_rate", "integrator.*", "attribution.*"}) d.settings.emplace_back(key);
+    // The half car's truck is two-dimensional: no pitch, no yaw (mbmodel/Truck.cpp).
+    const std::vector<std::string> car = getCarSettings(
+        std::is_same_v<Car, FullCarModel> ? std::vector<std::string_view>{} : kFullCarOnlyParameters);
+    d.settings.insert(d.settings.end(), car.begin(), car.end());
     d.makeMultibody = [](const CarParameters& car, const TrackInput& track, const ModelOptions& options) {
         return std::unique_ptr<RockingModel>(std::make_unique<Car>(car, track, options));
     };
@@ -55,8 +61,10 @@ ModelDescriptor describeHalfCarModel() {
 }
 
 ModelDescriptor describeFullCarModel() {
-    return describeSimbodyCar<FullCarModel>(
+    ModelDescriptor d = describeSimbodyCar<FullCarModel>(
         model_names::kFullCar, "Simbody full car: car body, two trucks, four wheelsets, with pitch and yaw");
+    d.settings.emplace_back("track.entry");  // where the trailing truck meets the track (FullCarModel.cpp)
+    return d;
 }
 
 }  // namespace rockroll

@@ -48,9 +48,10 @@ TEST(ScenarioLoader, OverridesAnyCarParameterWithUnits) {
 }
 
 TEST(ScenarioLoader, ErrorsNameFileKeyValueAndExpectation) {
-    std::string e = errorOf(test_cases::replaceOnce(kGood, "speed = \"16.5 mph\"\n", ""));
+    // A car inline (by its name, without base or file) must give every parameter.
+    std::string e = errorOf(test_cases::replaceOnce(kGood, "base = \"70ton-loaded\"", "name = \"mine\""));
     EXPECT_NE(e.find("case.toml"), std::string::npos) << e;
-    EXPECT_NE(e.find("run.speed"), std::string::npos) << e;
+    EXPECT_NE(e.find("car.body_and_bolsters_weight"), std::string::npos) << e;
     EXPECT_NE(e.find("missing"), std::string::npos) << e;
 
     e = errorOf(test_cases::replaceOnce(kGood, "\"16.5 mph\"", "\"16.5 in\""));
@@ -201,4 +202,50 @@ TEST(ScenarioLoader, FilesOverTheSizeLimitsOrNotRegularAreRefused) {
     const std::string big = loadError(dir / "big.toml");
     EXPECT_NE(big.find("the scenario file is 16777217 bytes; expected at most 16777216 bytes (16 MiB"), std::string::npos)
         << big;
+}
+
+// Every key may be left out and takes its default, the value of scenarios/70ton-loaded.toml
+// (docs/cli.md, "Keys and defaults"): an empty file is the default case, key for key.
+TEST(ScenarioLoader, AnEmptyScenarioIsTheDefaultCase) {
+    Scenario def = getDefaultScenario();
+    def.description.clear();
+    const Scenario empty = parseScenario("", "empty.toml");
+    EXPECT_EQ(formatScenarioToml(empty), formatScenarioToml(def));
+    EXPECT_TRUE(empty.settingsSet.empty());
+    // A car, an amplitude and a speed: the rest as the default case.
+    const Scenario five = parseScenario("[car]\nbase = \"70ton-loaded\"\n[track]\namplitude = \"0.75 in\"\n[run]\n"
+                                        "speed = \"15 mph\"\n",
+                                        "five.toml");
+    Scenario expected = def;
+    expected.speed = 15 * units::mph;
+    EXPECT_EQ(formatScenarioToml(five), formatScenarioToml(expected));
+    EXPECT_EQ(five.settingsSet, (std::vector<std::string>{"car.base", "run.speed", "track.amplitude"}));
+}
+
+// What the user set is what the file holds and what the overrides add, never a default.
+TEST(ScenarioLoader, SettingsSetAreTheFileKeysAndTheOverrides) {
+    const Scenario sc = parseScenario(kGood, "case.toml", {{"integrator.max_step", "0.001 s"}, {"eom.small_angles", "true"}});
+    EXPECT_EQ(sc.settingsSet,
+              (std::vector<std::string>{"car.base", "eom.small_angles", "integrator.accuracy", "integrator.max_step",
+                                        "integrator.method", "run.duration", "run.model", "run.speed",
+                                        "track.amplitude", "track.rail_length"}));
+}
+
+// A count is a whole number: center_plate_rim_points = 2.5 is refused by the loader with the
+// file, line, key and value, in a scenario and in a car file, before any model is built.
+TEST(ScenarioLoader, CountsMustBeIntegers) {
+    const std::string e = errorOf(test_cases::replaceOnce(kGood, "base = \"70ton-loaded\"",
+                                                          "base = \"70ton-loaded\"\ncenter_plate_rim_points = 2.5"));
+    EXPECT_NE(e.find("case.toml:4: key 'car.center_plate_rim_points' = 2.5: expected an integer"), std::string::npos)
+        << e;
+    EXPECT_EQ(e.find("CenterPlateContact"), std::string::npos) << e;
+    EXPECT_EQ(parseScenario(test_cases::replaceOnce(kGood, "base = \"70ton-loaded\"",
+                                                    "base = \"70ton-loaded\"\ncenter_plate_rim_points = 8"),
+                            "case.toml")
+                  .car.centerPlateRimPoints,
+              8);
+    const ValueRange& range = getValueRange("car.center_plate_rim_points");
+    EXPECT_TRUE(range.integer);
+    EXPECT_FALSE(range.contains(2.5));
+    EXPECT_TRUE(range.contains(4));
 }
