@@ -170,6 +170,8 @@ std::vector<std::pair<SteadyAt, bool>> collectSteadyAt(const SteadyStateSet& set
             SteadyAt v;
             v.rollAmplitudeDeg = a.rollAmplitudeDeg + f * (b.rollAmplitudeDeg - a.rollAmplitudeDeg);
             v.twin = f < 0.5 ? a.twin : b.twin;
+            v.harmonics = a.harmonics + f * (b.harmonics - a.harmonics);
+            v.stability = f < 0.5 ? a.stability : b.stability;
             out.push_back({v, a.stability == Stability::Stable && b.stability == Stability::Stable});
         }
     return out;

@@ -219,20 +219,16 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
                       formatPublished(ref("describing_function.high_branch_roll", "deg")),
                       formatPublished(ref("describing_function.simulation_high_branch_not_below", "mph")));
     for (const auto& [amp, set] : steady) {
-        // The largest solution at the report's lowest speed, and its label.
-        const SteadyStatePoint* best = nullptr;
-        for (const auto& path : set.paths)
-            for (const auto& p : path.points)
-                if (std::abs(p.speedMph - lowest) < 0.5 && (!best || p.rollAmplitudeDeg > best->rollAmplitudeDeg)) best = &p;
-        if (!best) {
-            md += fmt::format(" At {:.2f} in we traced no solution within 0.5 mph of {:g} mph.", amp, lowest);
+        // The largest solution at the report's lowest speed, and the label of the nearer
+        // traced point.
+        const std::vector<SteadyAt> at = findAllSteadyAt(set, lowest);
+        if (at.empty()) {
+            md += fmt::format(" At {:.2f} in we traced no solution at {:g} mph.", amp, lowest);
             continue;
         }
-        md += fmt::format(" At {:.2f} in our largest solution near {:g} mph ({:.2f} mph) has a roll amplitude of {:.2f}° "
-                          "and is labelled {} ({}{}).",
-                          amp, lowest, best->speedMph, best->rollAmplitudeDeg, toWord(best->stability),
-                          best->checked ? "checked there: " : "from the nearest check on its stretch: ",
-                          best->checked ? best->stabilityEvidence : "interpolated");
+        md += fmt::format(" At {:.2f} in our largest solution at {:g} mph has a roll amplitude of {:.2f}° and is labelled "
+                          "{}.",
+                          amp, lowest, at.back().rollAmplitudeDeg, toWord(at.back().stability));
     }
     md += "\n\n";
     for (const auto& [a, set] : steady) md += fmt::format("![describing function, {:.2f} in](steady_70ton-loaded_{:.2f}in.png)\n", a, a);

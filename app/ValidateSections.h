@@ -193,6 +193,8 @@ std::string formatBranchTable(const std::vector<BranchRow>& rows, const std::vec
 struct SteadyAt {
     double rollAmplitudeDeg = 0;
     TwinMaxima twin;
+    Eigen::VectorXd harmonics;  ///< interpolated along the path: a guess for solve() at this speed
+    Stability stability = Stability::NotComputed;  ///< of the nearer traced point
 };
 /// The largest (stable, when stableOnly) describing-function solution at `mph`.
 std::optional<SteadyAt> findSteadyAt(const SteadyStateSet& set, double mph, bool stableOnly);

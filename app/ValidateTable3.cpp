@@ -65,7 +65,14 @@ std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>&
             for (const auto& [a, set] : steady)
                 if (std::abs(a - row.amplitudeIn) < 1e-9) {
                     if (const auto df = findSteadyAt(set, row.speedMph, !s.quick)) {
-                        const TwinMaxima& t = df->twin;
+                        // The twin run from the solution at exactly this speed.
+                        const CarParameters car = makeCarParameters(row.car);
+                        const double L = 39 * units::foot;
+                        const DescribingFunctionModel model(
+                            car, DescribingFunctionModel::calcFundamentalCrossLevel(a * units::inch, car.wheelbase, L), L);
+                        const auto x = model.solve(row.speedMph, df->harmonics);
+                        const TwinMaxima t = x ? model.calcTwinMaxima(*x, row.speedMph, ContinuationSettings{}.twinPeriods)
+                                               : TwinMaxima{};
                         const bool loads = t.stayed();
                         auto load = [&](double x, double report) {
                             return loads ? fmt::format("{:.0f} ({}) twin", x, fmtPct(x, report))
