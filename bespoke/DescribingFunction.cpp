@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <functional>
+#include <memory>
 #include <set>
 #include <cmath>
 #include <limits>
@@ -34,6 +35,20 @@ constexpr double kForceScale = 1e4;     // residuals in 10 kN and 10 kN·m
 constexpr int kSamples = 720;           // per period, for output maxima
 constexpr int kAxisY = 1, kAxisZ = 2;
 constexpr double kTwinAccuracy = 1e-4;  // the twin maxima's runs and the sweep starts
+
+/// CVODE BDF on the twin's 22 states at relative accuracy `accuracy` (absolute: eom's).
+std::unique_ptr<StiffIntegrator> makeTwinIntegrator(const EomHalfCarModel& twin, double accuracy) {
+    using M = EomHalfCarModel;
+    return std::make_unique<StiffIntegrator>(
+        M::kNumStates,
+        [&twin](double t, const double* y, double* yDot) {
+            M::State s = Eigen::Map<const M::State>(y), d;
+            twin.calcStateDerivative(t, s, d);
+            Eigen::Map<M::State> out(yDot);
+            out = d;
+        },
+        accuracy, getEomAbsoluteTolerances(accuracy));
+}
 
 PiecewiseLinearLaw makeLinear(double stiffness, double damping) {
     // f = −k·d − c·ḋ
@@ -393,16 +408,9 @@ Eigen::VectorXd DescribingFunctionModel::projectTwinState(const EomHalfCarModel:
     using M = EomHalfCarModel;
     const EomHalfCarModel twin = makeTwin(speedMph);
     const double period = 2 * std::numbers::pi / calcOmega(speedMph);
-    const double accuracy = kTwinAccuracy;  // a guess for solve(), which then converges on its own
-    StiffIntegrator integ(
-        M::kNumStates,
-        [&twin](double t, const double* y, double* yDot) {
-            M::State s = Eigen::Map<const M::State>(y), d;
-            twin.calcStateDerivative(t, s, d);
-            Eigen::Map<M::State> out(yDot);
-            out = d;
-        },
-        accuracy, getEomAbsoluteTolerances(accuracy));
+    // A guess for solve(), which then converges on its own.
+    const std::unique_ptr<StiffIntegrator> integPtr = makeTwinIntegrator(twin, kTwinAccuracy);
+    StiffIntegrator& integ = *integPtr;
     integ.initialize(0, y0.data());
     integ.advanceTo((periods - 1) * period);
     // The last period sampled at K points: the DFT's mean, first and second harmonics.
@@ -458,18 +466,10 @@ TwinFloquet DescribingFunctionModel::calcTwinFloquet(const Eigen::VectorXd& x, d
     // afresh (CVodeReInit would reset one as well), so a flow depends on y0 alone and the
     // monodromy's columns can run in parallel with the same bits as one after another.
     auto flow = [&](const M::State& y0) {
-        StiffIntegrator integ(
-            M::kNumStates,
-            [&twin](double t, const double* y, double* yDot) {
-                M::State s = Eigen::Map<const M::State>(y), d;
-                twin.calcStateDerivative(t, s, d);
-                Eigen::Map<M::State> out(yDot);
-                out = d;
-            },
-            accuracy, getEomAbsoluteTolerances(accuracy));
-        integ.initialize(0, y0.data());
-        integ.advanceTo(period);
-        return M::State(Eigen::Map<const M::State>(integ.getState().data()));
+        const std::unique_ptr<StiffIntegrator> integ = makeTwinIntegrator(twin, accuracy);
+        integ->initialize(0, y0.data());
+        integ->advanceTo(period);
+        return M::State(Eigen::Map<const M::State>(integ->getState().data()));
     };
     // Perturbations well above the integration error (relative 1e-7 of ~0.5 m)
     // and well below the motion: positions 10 µm, rates 0.1 mm/s, bristles 0.1 µm.

@@ -25,6 +25,17 @@ DescribingFunctionModel makeModel(double amplitudeIn) {
     return DescribingFunctionModel(car, C, kRailLength);
 }
 
+/// Paths from both ends of [from, to] only: no stability, no sweep starts, no twin runs.
+ContinuationSettings makePathSettings(double fromMph, double toMph) {
+    ContinuationSettings s;
+    s.fromMph = fromMph;
+    s.toMph = toMph;
+    s.stability = StabilityMethod::None;
+    s.sweepStepMph = 0;
+    s.twinPeriods = 0;
+    return s;
+}
+
 /// Half peak-to-peak of car-body roll over the last 3 input periods of a long twin run.
 double runTwin(const DescribingFunctionModel& df, double speedMph, double duration) {
     const EomHalfCarModel twin = df.makeTwin(speedMph);
@@ -71,13 +82,8 @@ TEST(DescribingFunction, LowestBranchMatchesItsTimeDomainTwin) {
 // there are three or more solutions at one speed.
 TEST(DescribingFunction, ContinuationTracesTheFoldsOfTheJumpResonance) {
     const DescribingFunctionModel df = makeModel(0.75);
-    ContinuationSettings s;
-    s.fromMph = 12;
-    s.toMph = 22;
+    ContinuationSettings s = makePathSettings(12, 22);
     s.maxPoints = 250;
-    s.stability = StabilityMethod::None;
-    s.sweepStepMph = 0;
-    s.twinPeriods = 0;
     const SteadyStateSet set = df.trace(s);
     ASSERT_FALSE(set.paths.empty());
     const std::vector<SteadyStatePoint>& all = set.paths[0].points;  // from rest at 12 mph
@@ -129,13 +135,7 @@ namespace {
 /// twin stays on, with its twin maxima.
 std::optional<std::pair<SteadyStatePoint, TwinMaxima>> solveLargestStayedAt(const DescribingFunctionModel& df,
                                                                            double mph) {
-    ContinuationSettings s;
-    s.fromMph = 10;
-    s.toMph = 22;
-    s.stability = StabilityMethod::None;
-    s.sweepStepMph = 0;
-    s.twinPeriods = 0;
-    const SteadyStateSet set = df.trace(s);
+    const SteadyStateSet set = df.trace(makePathSettings(10, 22));
     std::optional<std::pair<SteadyStatePoint, TwinMaxima>> best;
     for (const auto& path : set.paths)
         for (size_t i = 1; i < path.points.size(); ++i) {
@@ -209,13 +209,7 @@ TEST(DescribingFunction, TwinMaximaMoveWithContactStiffnessNoMoreThanTheHalfCars
 // 10 mph, turning at its folds, never reaches it (docs/bespoke.md, "Starts").
 TEST(DescribingFunction, FindsTheSevereBranchFromTheTopOfTheRange) {
     const DescribingFunctionModel df = makeModel(1.0);
-    ContinuationSettings s;
-    s.fromMph = 10;
-    s.toMph = 22;
-    s.stability = StabilityMethod::None;
-    s.sweepStepMph = 0;
-    s.twinPeriods = 0;
-    const SteadyStateSet set = df.trace(s);
+    const SteadyStateSet set = df.trace(makePathSettings(10, 22));
     ASSERT_GE(set.paths.size(), 2u);
     EXPECT_EQ(set.paths[1].start, "rest at 22 mph");
     double fastestOfPath0 = 0;
