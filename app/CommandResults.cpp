@@ -272,12 +272,14 @@ nlohmann::ordered_json makeHarmonicsJson(const ForceHarmonics& h) {
 }
 nlohmann::ordered_json makeTwinJson(const TwinMaxima& t) {
     if (!t.computed)
-        return {{"periods", t.periods}, {"roll_amplitude_deg", nullptr}, {"persistence", nullptr}, {"stayed", nullptr},
+        return {{"periods", t.periods}, {"roll_amplitude_deg", nullptr}, {"persistence", nullptr}, {"landed_on", nullptr},
+                {"stayed", nullptr},
                 {"max_roll_deg", nullptr}, {"max_truck_side_wheel_load_lb", nullptr},
                 {"max_side_bearing_load_lb", nullptr}, {"max_center_plate_load_lb", nullptr}};
     return {{"periods", t.periods},
             {"roll_amplitude_deg", t.rollAmplitudeDeg},
             {"persistence", t.persistence},
+            {"landed_on", t.landedOn},
             {"stayed", t.stayed()},
             {"max_roll_deg", t.maxRollDeg},
             {"max_truck_side_wheel_load_lb", t.maxTruckSideWheelLoadLb},
@@ -315,8 +317,8 @@ nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc,
                   "from the two-harmonic series";
     j["twin_maxima"] = settings.twinPeriods > 0
                            ? fmt::format("the time-domain twin run {} forcing periods from each solution; 20 Hz filtered "
-                                         "maxima over its last period; stayed: its roll amplitude there within {:g} % of "
-                                         "the solution's",
+                                         "maxima over its last period; stayed: that period solves back onto the solution "
+                                         "(or, solving onto none, its roll amplitude is within {:g} % of the solution's)",
                                          settings.twinPeriods, 100 * kPersistenceTolerance)
                            : std::string("not computed (--twin-periods 0)");
     j["starts"] = settings.sweepStepMph > 0

@@ -276,8 +276,7 @@ int steadyCommand(const SteadyOptions& o) {
                        p.twin.computed ? fmt::format("{:.0f}", p.twin.maxSideBearingLoadLb) : "-",
                        p.maxFloquetMultiplier, toString(b.stability));
         }
-    if (o.twinPeriods > 0) fmt::print("* the twin left the solution (its roll amplitude moved by more than {:g} %)\n",
-                                      100 * kPersistenceTolerance);
+    if (o.twinPeriods > 0) fmt::print("* the twin left the solution (its last period does not solve back onto it)\n");
     if (dir) fmt::print("wrote {} and {}\n", dir->getFinalPath("steady.csv").string(),
                         dir->getFinalPath("steady.json").string());
     return 0;

@@ -312,7 +312,8 @@ std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double spe
 }
 
 bool TwinMaxima::stayed() const {
-    return computed && std::abs(persistence - 1) <= kPersistenceTolerance;
+    return computed && (landedOn == "this solution" ||
+                        (landedOn == "no solution" && std::abs(persistence - 1) <= kPersistenceTolerance));
 }
 
 SteadyStatePoint DescribingFunctionModel::describe(const Eigen::VectorXd& x, double speedMph) const {
@@ -400,6 +401,13 @@ TwinMaxima DescribingFunctionModel::calcTwinMaxima(const Eigen::VectorXd& x, dou
     out.maxTruckSideWheelLoadLb = s.steady.truckSideWheelLoadLb;
     out.maxSideBearingLoadLb = s.steady.sideBearingLoadLb;
     out.maxCenterPlateLoadLb = s.steady.centerPlateLoadLb;
+    // Where the run went, judged as the persistence check judges it (its last period
+    // solved back onto the solution set), so a stable label and these maxima agree.
+    try {
+        out.landedOn = checkTwinPersistence(x, speedMph, periods).landedOn;
+    } catch (const NumericalFailure&) {
+        out.landedOn = "twin failed";
+    }
     return out;
 }
 

@@ -60,7 +60,11 @@ struct TwinMaxima {
     double maxTruckSideWheelLoadLb = 0;
     double maxSideBearingLoadLb = 0;
     double maxCenterPlateLoadLb = 0;
-    /// The twin stayed on the solution: |persistence − 1| ≤ kPersistenceTolerance.
+    /// Its last period solved back onto the solution set (checkTwinPersistence over the
+    /// same periods): "this solution" | "another solution" | "no solution" | "twin failed".
+    std::string landedOn;
+    /// The twin stayed on the solution: its last period solves back onto it, or, when it
+    /// solves onto none, |persistence − 1| ≤ kPersistenceTolerance.
     bool stayed() const;
 };
 
