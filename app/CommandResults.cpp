@@ -3,6 +3,7 @@
 #include "app/Provenance.h"
 #include "scenarios/ModelRegistry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -286,9 +287,6 @@ nlohmann::ordered_json makeTwinJson(const TwinMaxima& t) {
             {"max_side_bearing_load_lb", t.maxSideBearingLoadLb},
             {"max_center_plate_load_lb", t.maxCenterPlateLoadLb}};
 }
-const char* describeStability(Stability s) {
-    return s == Stability::Stable ? "stable" : s == Stability::Unstable ? "unstable" : "not computed";
-}
 }  // namespace
 
 nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc, const SteadyOptions& o,
@@ -329,8 +327,9 @@ nlohmann::ordered_json makeSteadyJson(const SteadyResult& r, const Scenario& sc,
                       : std::string("both ends of the range from rest (no sweep starts)");
     j["provenance"] = makeProvenance(sc, command);
     j["provenance"]["model"] = "describing function";  // the scenario's [run] model is not used here
-    j["sweep_starts_tried"] = r.set.sweepStartsTried;
-    j["sweep_starts_new"] = r.set.sweepStartsNew;
+    j["sweep_starts_tried"] = r.set.sweepStarts.size();
+    j["sweep_starts_new"] = std::count_if(r.set.sweepStarts.begin(), r.set.sweepStarts.end(),
+                                          [](const TwinSweepStart& t) { return t.newPath; });
     j["paths"] = nlohmann::ordered_json::array();
     for (const auto& p : r.set.paths)
         j["paths"].push_back({{"start", p.start},

@@ -18,16 +18,12 @@ constexpr double kFromMph = 10, kToMph = 22;
 /// near resonance, docs/bespoke.md).
 constexpr double kNearFraction = 0.2;
 
-const char* toWord(Stability s) {
-    return s == Stability::Stable ? "stable" : s == Stability::Unstable ? "unstable" : "not computed";
-}
-
 /// "stable 10.0–14.9, unstable 14.9–13.1, …": the path's stretches of one stability.
 std::string describeStretches(const SteadyStateSet& set, int path) {
     std::vector<std::string> parts;
     for (const auto& b : set.branches)
         if (b.path == path && !b.points.empty())
-            parts.push_back(fmt::format("{} {:.1f}–{:.1f} ({:.2f}–{:.2f}°)", toWord(b.stability),
+            parts.push_back(fmt::format("{} {:.1f}–{:.1f} ({:.2f}–{:.2f}°)", describeStability(b.stability),
                                         b.points.front().speedMph, b.points.back().speedMph,
                                         b.points.front().rollAmplitudeDeg, b.points.back().rollAmplitudeDeg));
     return fmt::format("{}", fmt::join(parts, "; "));
@@ -228,7 +224,7 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
         }
         md += fmt::format(" At {:.2f} in our largest solution at {:g} mph has a roll amplitude of {:.2f}° and is labelled "
                           "{}.",
-                          amp, lowest, at.back().rollAmplitudeDeg, toWord(at.back().stability));
+                          amp, lowest, at.back().rollAmplitudeDeg, describeStability(at.back().stability));
     }
     md += "\n\n";
     for (const auto& [a, set] : steady) md += fmt::format("![describing function, {:.2f} in](steady_70ton-loaded_{:.2f}in.png)\n", a, a);

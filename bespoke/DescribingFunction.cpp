@@ -29,6 +29,10 @@ const char* toString(Stability s) {
     return "not computed";
 }
 
+const char* describeStability(Stability s) {
+    return s == Stability::Stable ? "stable" : s == Stability::Unstable ? "unstable" : "not computed";
+}
+
 namespace {
 constexpr double kUnknownScale = 1e-3;  // unknowns in mm and mrad
 constexpr double kForceScale = 1e4;     // residuals in 10 kN and 10 kN·m
@@ -750,11 +754,9 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         for (auto& sw : sweeps) all.insert(all.end(), sw.begin(), sw.end());
         parallelFor(all.size(), 0, [&](size_t i) { all[i].x = solve(all[i].record.speedMph, *all[i].x); });
         for (Candidate& c : all) {
-            ++set.sweepStartsTried;
             c.record.solved = c.x.has_value();
             if (c.x) c.record.solvedRollAmplitudeDeg = describe(*c.x, c.record.speedMph).rollAmplitudeDeg;
             if (c.x && !isKnown(*c.x, c.record.speedMph)) {
-                ++set.sweepStartsNew;
                 c.record.newPath = true;
                 set.paths.push_back(makePath(*c.x, c.record.speedMph, 0,
                                              fmt::format("twin {} sweep at {:g} mph", c.record.direction,

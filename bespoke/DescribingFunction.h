@@ -37,6 +37,8 @@ namespace rockroll {
 enum class Stability { Stable, Unstable, NotComputed };
 /// "yes" | "no" | "not computed" (CSV cells and text tables).
 const char* toString(Stability s);
+/// "stable" | "unstable" | "not computed" (JSON and prose).
+const char* describeStability(Stability s);
 
 /// A force's mean and the amplitudes of its first two harmonics [lb]: what harmonic
 /// balance determines (report eq. 23), exact for the two-harmonic motion
@@ -183,8 +185,7 @@ struct SteadyStateSet {
     std::vector<SteadyStatePath> paths;
     std::vector<SteadyStateBranch> branches;  ///< the paths cut where stability changes
     std::vector<StabilityChange> changes;
-    std::vector<TwinSweepStart> sweepStarts;
-    int sweepStartsTried = 0, sweepStartsNew = 0;
+    std::vector<TwinSweepStart> sweepStarts;  ///< every speed tried; newPath marks those that started a path
 };
 
 class DescribingFunctionModel {
