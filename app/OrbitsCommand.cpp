@@ -110,6 +110,7 @@ int orbitsCommand(const OrbitsOptions& o) {
     OrbitSettings settings;
     settings.accuracy = o.accuracy;
     settings.shooting.threads = o.jobs;
+    settings.shooting.maxIterations = o.newtonSteps;
     { const PeriodicOrbitSolver check(sc0, 0.0, settings); }  // ScenarioError: a model whose state cannot be shot
     std::optional<OutputDirectory> dir;
     if (!o.outDir.empty()) dir.emplace(o.outDir, o.force);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <exception>
 #include <fmt/format.h>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -83,16 +84,34 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
         Eigen::VectorXd delta = (out.monodromy - I).completeOrthogonalDecomposition().solve(out.x - out.mapped);
         const double size = delta.cwiseQuotient(steps_).cwiseAbs().maxCoeff();
         if (size > settings_.maxStep) delta *= settings_.maxStep / size;
-        const Eigen::VectorXd next = out.x + delta;
-        Eigen::VectorXd nextMapped;
-        try {
-            nextMapped = map_(next);
-            ++out.mapEvaluations;
-        } catch (const std::exception& e) {
-            out.failure = fmt::format("the map failed after Newton step {}: {}", out.iterations + 1, e.what());
+        // Backtracking: the full step first, then halved while the mismatch does not fall; when no
+        // try falls, the try with the smallest mismatch, unless it grew past 10× the current one.
+        Eigen::VectorXd next, nextMapped;
+        double nextMismatch = std::numeric_limits<double>::infinity();
+        std::string mapFailure;
+        double fraction = 1;
+        for (int h = 0; h <= settings_.lineSearchHalvings; ++h, fraction *= 0.5) {
+            const Eigen::VectorXd trial = out.x + fraction * delta;
+            Eigen::VectorXd trialMapped;
+            try {
+                trialMapped = map_(trial);
+                ++out.mapEvaluations;
+            } catch (const std::exception& e) {
+                mapFailure = e.what();
+                continue;
+            }
+            const double m = calcMismatch(trial, trialMapped);
+            if (m < nextMismatch) {
+                next = trial;
+                nextMapped = std::move(trialMapped);
+                nextMismatch = m;
+            }
+            if (nextMismatch < out.mismatch) break;
+        }
+        if (next.size() == 0) {
+            out.failure = fmt::format("the map failed after Newton step {}: {}", out.iterations + 1, mapFailure);
             break;
         }
-        const double nextMismatch = calcMismatch(next, nextMapped);
         if (!(nextMismatch <= 10 * out.mismatch)) {
             out.failure = fmt::format("Newton step {} made the mismatch grow from {:.3g} to {:.3g} perturbation steps",
                                       out.iterations + 1, out.mismatch, nextMismatch);

@@ -14,8 +14,11 @@
 // M − I singular up to finite-difference noise), so orbits come in a family along
 // that direction and the step leaves it where it is. Mismatch: max_i |F_i| / s_i,
 // s_i the perturbation steps unless other scales are given; converged below `tolerance`. A step is
-// capped at `maxStep` perturbation steps; a step whose mismatch grows past 10×
-// the current one, or whose map fails, ends the search. The Floquet multipliers
+// capped at `maxStep` perturbation steps and halved up to `lineSearchHalvings` times
+// while the mismatch does not fall (far from the orbit the map is strongly nonlinear:
+// contacts open and close); when no try lowers it, the best try is taken unless it
+// grew past 10× the current mismatch, which ends the search, as does a map that fails
+// on every try. The Floquet multipliers
 // are the eigenvalues of M at the last iterate (a sticking wedge contributes one
 // μ = 1 with finite-difference noise).
 #include <Eigen/Dense>
@@ -27,7 +30,8 @@ namespace rockroll {
 struct ShootingSettings {
     int maxIterations = 8;
     double tolerance = 5;    ///< converged when max_i |F_i| / h_i is below this
-    double maxStep = 1000;   ///< largest Newton step, in perturbation steps
+    double maxStep = 1e5;    ///< largest Newton step, in perturbation steps
+    int lineSearchHalvings = 4;  ///< halvings of a Newton step whose mismatch does not fall
     int threads = 0;         ///< parallelFor's limit for the monodromy's columns (0: the pool's)
 };
 
