@@ -122,6 +122,7 @@ std::vector<SweepSpec> makeSweepSpecs(const std::vector<Scenario>& bases, const 
                 s.stepMph = o.stepMph;
                 s.direction = std::string(dir) == "up" ? SweepDirection::Up : SweepDirection::Down;
                 s.fresh = o.fresh;
+                s.rampTime = o.rampS;
                 specs.push_back(s);
             }
     }

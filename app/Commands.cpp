@@ -344,7 +344,9 @@ int sweepCommand(const SweepOptions& o) {
                        sc.track.measured.empty() ? fmt::format("{:.2f} in", sc.track.amplitude / units::inch)
                                                  : std::string("measured track"),
                        specs[i].direction == SweepDirection::Up ? "up" : "down",
-                       specs[i].fresh ? "each speed from rest" : "state carried");
+                       specs[i].fresh            ? std::string("each speed from rest")
+                       : specs[i].rampTime > 0 ? fmt::format("state carried, speed ramped over {:g} s", specs[i].rampTime)
+                                               : std::string("state carried, speed stepped at once"));
             fmt::print("{:>10}{:>12}{:>14}{:>12}{:>14}{:>14}{:>10}  {}\n", "speed mph", "max roll", "steady roll",
                        "lift in", "wheel lb", "side brg lb", "regime", "criteria");
             for (const SweepPoint& p : results[i]) {

@@ -51,6 +51,9 @@ struct SweepOptions : CommonOptions {
     std::optional<double> maxWallS;  ///< wall-time limit of each speed's run [s]
     int jobs = 0;  ///< 0: one per core
     bool json = false, fresh = false;
+    /// The speed change between sweep points: a linear ramp over this time; 0 steps the
+    /// speed at once, as a run restarted at the new speed from the last state does [s].
+    double rampS = 1.0;
     bool resume = false;  ///< continue from the journal in --out DIR.partial (app/Journal.h)
 };
 

@@ -137,8 +137,11 @@ int orbitsCommand(const OrbitsOptions& o) {
         spec.toMph = std::max(v0, o.fromMph);
         spec.stepMph = std::abs(o.stepMph);
         spec.direction = v0 > o.fromMph ? SweepDirection::Down : SweepDirection::Up;
-        startKind = fmt::format("a {} sweep from {:g} mph ({:g} mph steps, {:g} s a speed)",
-                                v0 > o.fromMph ? "down" : "up", v0, spec.stepMph, o.startDurationS);
+        spec.rampTime = o.startRampS;
+        startKind = fmt::format("a {} sweep from {:g} mph ({:g} mph steps, {:g} s a speed, {})",
+                                v0 > o.fromMph ? "down" : "up", v0, spec.stepMph, o.startDurationS,
+                                o.startRampS > 0 ? fmt::format("speed ramped over {:g} s", o.startRampS)
+                                                 : std::string("speed stepped at once"));
         const std::vector<SweepPoint> sweep = runSweep(spec, [&](const SweepPoint& p) {
             if (!o.json)
                 fmt::print(stderr, "orbits: start sweep {:g} mph: {}\n", p.speedMph,
@@ -197,6 +200,7 @@ int orbitsCommand(const OrbitsOptions& o) {
     j["start"] = {{"speed_mph", o.fromMph},
                   {"kind", startKind},
                   {"sweep_from_mph", o.startSweepFromMph ? json(*o.startSweepFromMph) : json(nullptr)},
+                  {"sweep_ramp_time_s", o.startSweepFromMph ? json(o.startRampS) : json(nullptr)},
                   {"duration_s", o.startDurationS},
                   {"distance_m", startState.distance},
                   {"steady_roll_amplitude_deg", startSummary.steadyRollAmplitudeDeg},

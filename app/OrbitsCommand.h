@@ -19,6 +19,7 @@ struct OrbitsOptions : CommonOptions {
     /// (startDurationS at each speed, the state carried over), not a run from rest: the way
     /// onto an upper branch that a run from rest does not reach [mph].
     std::optional<double> startSweepFromMph;
+    double startRampS = 1.0;     ///< the start sweep's speed ramp between speeds; 0: a step [s]
     double accuracy = 1e-7;      ///< integrator accuracy of the map
     int refinements = 2;         ///< step halvings at a failure before the branch ends
     int newtonSteps = 20;        ///< Newton steps per shooting (on P, then on P∘P)

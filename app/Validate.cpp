@@ -131,6 +131,8 @@ int validateCommand(const ValidateOptions& o) {
     md += section("criteria", [&] { return makeCriteriaSection(s, sweeps); });
     step("attribution");
     md += section("attribution", [&] { return makeAttributionSection(s, meta); });
+    step("periodic orbits");
+    md += section("periodic orbits", [&] { return makeOrbitSection(s, sweeps, steady, meta); });
     if (!failedSections.empty()) meta["failed_sections"] = failedSections;
 
     step("plots");

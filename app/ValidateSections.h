@@ -110,6 +110,9 @@ std::string makeAddedDofSection(const Settings& s);
 std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult>& sweeps);
 /// 10. Attribution of the half car – reduced model difference (ValidateAttribution.cpp).
 std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& meta);
+/// 11. Periodic orbits of eom and the half car on the upper branch (ValidateOrbits.cpp).
+std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
+                             nlohmann::ordered_json& meta);
 
 namespace validate_detail {
 

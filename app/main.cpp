@@ -154,6 +154,10 @@ int main(int argc, char** argv) {
     sweepCmd->add_option("--max-wall-s", sweep.maxWallS, "wall-time limit of each speed's run [s]")
         ->check(inRange("limits.max_wall_time", "s"));
     sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
+    sweepCmd->add_option("--speed-ramp-s", sweep.rampS,
+                         "the speed changes between points over this linear ramp; 0: an instantaneous step [s]")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 60.0));
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
     addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
     sweepCmd->add_flag("--resume", sweep.resume,
@@ -221,6 +225,10 @@ int main(int argc, char** argv) {
                           "start from a speed sweep from this speed to --from-mph (--step-mph steps, "
                           "--start-duration-s each) instead of a run from rest [mph]")
         ->check(inRange("run.speed", "mph"));
+    orbitsCmd->add_option("--start-speed-ramp-s", orbits.startRampS,
+                          "the start sweep's speed ramp between speeds; 0: an instantaneous step [s]")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 60.0));
     orbitsCmd->add_option("--accuracy", orbits.accuracy, "integrator accuracy of the one-period map")
         ->capture_default_str()
         ->check(CLI::Range(1e-12, 1e-3));

@@ -64,6 +64,7 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
         return out;
     }
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+    int stalled = 0;
     for (;;) {
         out.mismatch = calcMismatch(out.x, out.mapped);
         if (std::getenv("ROCKROLL_SHOOTING_TRACE")) {
@@ -115,6 +116,15 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
         if (!(nextMismatch <= 10 * out.mismatch)) {
             out.failure = fmt::format("Newton step {} made the mismatch grow from {:.3g} to {:.3g} perturbation steps",
                                       out.iterations + 1, out.mismatch, nextMismatch);
+            break;
+        }
+        // Stalled: no try lowered the mismatch twice running (a non-smooth map whose Newton
+        // direction is no descent direction; more steps only cost monodromies).
+        stalled = nextMismatch >= out.mismatch ? stalled + 1 : 0;
+        if (stalled >= 2) {
+            out.failure = fmt::format("Newton stalled at step {}: no step lowered the mismatch ({:.3g} perturbation "
+                                      "steps) twice running",
+                                      out.iterations + 1, out.mismatch);
             break;
         }
         out.x = next;

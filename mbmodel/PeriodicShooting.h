@@ -18,7 +18,7 @@
 // while the mismatch does not fall (far from the orbit the map is strongly nonlinear:
 // contacts open and close); when no try lowers it, the best try is taken unless it
 // grew past 10× the current mismatch, which ends the search, as does a map that fails
-// on every try. The Floquet multipliers
+// on every try, or two Newton steps running that lower nothing. The Floquet multipliers
 // are the eigenvalues of M at the last iterate (a sticking wedge contributes one
 // μ = 1 with finite-difference noise).
 #include <Eigen/Dense>

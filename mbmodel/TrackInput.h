@@ -71,18 +71,20 @@ std::vector<MeasuredTrackSample> readTrackCsv(std::string_view text, const std::
 /// speed V: s = s₀ + V·t. A run continuing a speed sweep starts from the
 /// previous run's distance and speed V₀ and ramps linearly to V over T_ramp, so
 /// neither the rails' heights nor their vertical velocities (slope·ṡ) jump.
+/// T_ramp = 0 steps the speed at once (the rails' vertical velocities jump; their
+/// heights do not).
 struct TrackMotion {
     double speed = 0;          ///< V [m/s]
     double startDistance = 0;  ///< s₀ [m]
     double startSpeed = -1;    ///< V₀ [m/s]; < 0: V from t = 0
-    double rampTime = 1.0;     ///< T_ramp [s]
+    double rampTime = 1.0;     ///< T_ramp [s]; 0: V from t = 0
 
     double calcSpeed(double t) const {
         if (startSpeed < 0 || t >= rampTime) return speed;
         return startSpeed + (speed - startSpeed) * t / rampTime;
     }
     double calcDistance(double t) const {
-        if (startSpeed < 0) return startDistance + speed * t;
+        if (startSpeed < 0 || rampTime <= 0) return startDistance + speed * t;
         const double tr = t < rampTime ? t : rampTime;
         const double ramp = startSpeed * tr + 0.5 * (speed - startSpeed) * tr * tr / rampTime;
         return startDistance + ramp + (t > rampTime ? speed * (t - rampTime) : 0.0);

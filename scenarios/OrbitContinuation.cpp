@@ -38,6 +38,7 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
     std::optional<PeriodicOrbit> prev;
     double step = settings_.stepMph;
     int halvings = 0;
+    bool crossedPlusOne = false;  ///< a real multiplier crossed +1 between the last two orbits
     const double eps = 1e-9;
     for (;;) {
         if (dir * (settings_.toMph - cur.speedMph) <= eps) {
@@ -75,7 +76,13 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
                 continue;
             }
             b.endBracketMph = std::make_pair(cur.speedMph, o.speedMph);
-            const bool fold = cur.largestRealMultiplier > settings_.foldMultiplier && cur.largestRealMultiplier < 2 - settings_.foldMultiplier;
+            // A fold: the last orbit's largest real multiplier is near +1, or a real multiplier
+            // crossed +1 between the last two orbits (the continuation slid from the stable onto
+            // the unstable side of a saddle-node, so both sides exist at the last orbit's speed
+            // and the fold lies between it and the failed speed).
+            const bool nearOne = cur.largestRealMultiplier > settings_.foldMultiplier &&
+                                 cur.largestRealMultiplier < 2 - settings_.foldMultiplier;
+            const bool fold = nearOne || crossedPlusOne;
             OrbitEvent e;
             e.kind = fold ? "fold" : "branch end";
             e.fromMph = cur.speedMph;
@@ -84,7 +91,8 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
                                    "mph: {}",
                                    cur.speedMph, cur.largestRealMultiplier, cur.maxMultiplier, o.speedMph, o.failure);
             b.events.push_back(e);
-            b.stopReason = fold ? "fold" : fmt::format("branch end (shooting failed; the last orbit's largest real "
+            b.stopReason = fold ? std::string(nearOne ? "fold" : "fold (a real multiplier crossed +1 just before it)")
+                                : fmt::format("branch end (shooting failed; the last orbit's largest real "
                                                        "multiplier {:.4f} is not near +1)",
                                                        cur.largestRealMultiplier);
             break;
@@ -100,10 +108,12 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
             const double c0 = calcComplexModulus(cur), c1 = calcComplexModulus(o);
             if (c0 <= margin && c1 > margin)
                 add("complex pair leaves the unit circle", fmt::format("|mu| {:.4f} -> {:.4f}", c0, c1));
-            if (cur.largestRealMultiplier <= margin && o.largestRealMultiplier > margin)
+            crossedPlusOne = cur.largestRealMultiplier <= margin && o.largestRealMultiplier > margin;
+            if (crossedPlusOne)
                 add("real multiplier crosses +1", fmt::format("largest real multiplier {:.4f} -> {:.4f}",
                                                               cur.largestRealMultiplier, o.largestRealMultiplier));
         } else {
+            crossedPlusOne = false;
             b.events.push_back(OrbitEvent{"period changes", cur.speedMph, o.speedMph,
                                           fmt::format("period {} -> {}", cur.period, o.period)});
         }

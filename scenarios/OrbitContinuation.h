@@ -10,8 +10,10 @@
 // branch: the predictor overshot the end of this one), ΔV is halved up to
 // `refinements` times; then the branch ends there and the speeds bracket its end.
 // A branch that ends so with the largest real multiplier of its last orbit near +1
-// (within 1 ± (1 − `foldMultiplier`)) ends at a fold (a saddle-node of periodic orbits: a real
-// multiplier reaches +1 there). Between neighbouring orbits it records a real
+// (within 1 ± (1 − `foldMultiplier`)), or with a real multiplier that crossed +1
+// between its last two orbits (the continuation slid onto the unstable side of the
+// saddle-node, which exists at the last speed too), ends at a fold (a saddle-node of
+// periodic orbits: a real multiplier reaches +1 there). Between neighbouring orbits it records a real
 // multiplier crossing −1 (period doubling), a complex pair leaving the unit circle
 // (Neimark–Sacker), and a real multiplier crossing +1, each as the speed bracket
 // where it happens (moduli compared with OrbitSettings::stabilityMargin).

@@ -132,12 +132,15 @@ TEST(CliWorkflow, OutOfEveryCommandReadsBack) {
     }
     {
         const CliOutcome o = runRockroll(dir, "sweep '" + kScenario + "' --model reduced --from-mph 14 --to-mph 15 "
-                                        "--step-mph 1 --duration-s 1 --direction up --out sweep "
+                                        "--step-mph 1 --duration-s 1 --direction up --out sweep --speed-ramp-s 0 "
                                         "--set car.side_bearing_clearance=\"0.25 in\"");
         ASSERT_EQ(o.exitCode, 0) << o.err;
         const auto doc = nlohmann::json::parse(readTextFile(dir / "sweep" / "sweep.json"));
         const auto& json = doc.at("points");
         ASSERT_EQ(json.size(), 2u);
+        // --speed-ramp-s 0: the speed steps at once, and the provenance says so.
+        EXPECT_EQ(json[1].at("provenance").at("sweep").at("ramp_time_s"), 0.0);
+        EXPECT_EQ(json[1].at("criteria_from_s"), 0.0);
         ASSERT_EQ(doc.at("jumps").size(), 1u);  // one sweep: up
         EXPECT_EQ(doc.at("jumps")[0].at("direction"), "up");
         EXPECT_EQ(json[0].at("provenance").at("overrides")[0].at("key"), "car.side_bearing_clearance");

@@ -66,6 +66,9 @@ void expectValues(const CsvTable& t, const std::string& col, const std::set<std:
             errors.push_back(file + " row " + std::to_string(r + 1) + ": " + col + " = \"" + t.rows[r][k] + "\"");
 }
 
+const std::vector<std::string> kOrbitNumbers{"speed_mph", "period", "roll_amplitude_deg", "wheel_lift_fraction",
+                                             "max_multiplier", "largest_real_multiplier", "smallest_real_multiplier"};
+
 /// Reads back one CSV written by validate; returns what is wrong with it.
 std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
     std::vector<std::string> errors;
@@ -107,6 +110,28 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
                                         : std::set<std::string>{"yes", "no", "not computed"},
                      errors, name);
         numeric = kSteadyNumbers;
+    } else if (name.rfind("orbits_", 0) == 0) {
+        // One row per orbit point computed: converged rows carry numbers; a failed point only its speed.
+        expectColumns(t, {"converged", "stable"}, errors, name);
+        expectColumns(t, kOrbitNumbers, errors, name);
+        expectValues(t, "converged", {"0", "1"}, errors, name);
+        CsvTable ok = t;
+        ok.rows.clear();
+        const int c = t.find("converged"), st = t.find("stable");
+        for (const auto& r : t.rows)
+            if (c >= 0 && r[c] == "1") {
+                ok.rows.push_back(r);
+                if (st >= 0 && r[st] != "yes" && r[st] != "no") errors.push_back(name + ": stable = \"" + r[st] + "\"");
+            } else if (st >= 0 && !r[st].empty()) {
+                errors.push_back(name + ": a point that did not converge has a stability");
+            }
+        for (const auto& col : kOrbitNumbers) try {
+                for (double v : ok.numbers(col))
+                    if (!std::isfinite(v)) errors.push_back(name + ": " + col + " holds " + std::to_string(v));
+            } catch (const std::exception& e) {
+                errors.push_back(name + ": " + e.what());
+            }
+        numeric = {"speed_mph"};
     } else {
         errors.push_back(name + ": a CSV this test does not know; add its columns here");
     }
@@ -141,6 +166,7 @@ std::set<Drawn> expectedLines(const std::string& png) {
     } else if (std::regex_match(png, m, std::regex("steady_(.+)\\.png"))) {
         e.insert({"steady_" + m[1].str() + ".csv", "speed_mph", "roll_amplitude_deg", 1});
         e.insert({"sweep_" + m[1].str() + "_", "speed_mph", "steady_roll_amplitude_deg", 1});
+        e.insert({"orbits_" + m[1].str() + "_", "speed_mph", "roll_amplitude_deg", 1});
     }
     return e;
 }
@@ -204,7 +230,7 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
                 continue;
             }
             if (name != "validation.json") continue;
-            for (const char* key : {"timehistories", "sweeps", "steady"}) {
+            for (const char* key : {"timehistories", "sweeps", "steady", "orbits"}) {
                 if (!(j.contains(key) && j[key].is_array() && !j[key].empty())) {
                     ADD_FAILURE() << "validation.json: no " << key;
                     continue;
@@ -256,7 +282,8 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const std::string report = readTextFile(out / "REPORT.md");
     for (const char* section : {"Time histories", "Roll against speed", "Table 3", "Table 4", "Describing-function",
-                                "Modes", "Convergence", "degrees of freedom", "criteria", "Attribution"})
+                                "Modes", "Convergence", "degrees of freedom", "criteria", "Attribution",
+                                "Where the upper branch ends"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
     // The quick attribution and convergence sections produce their tables.
     for (const char* table : {"| half car: `truck_gravity = false` |", "| reduced: `truck_weight = true` |",
@@ -286,13 +313,14 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
             << names.back() << " is not in REPORT.md's phase line";
     }
     EXPECT_EQ(join(names), join({"convergence", "time histories", "speed sweeps", "describing function", "Tables 3 and 4",
-                                 "modes", "added degrees of freedom", "attribution", "plots"}));
+                                 "modes", "added degrees of freedom", "attribution", "periodic orbits", "plots"}));
     EXPECT_LE(wallSum, meta.at("wall_min").get<double>() + 1e-9);
     EXPECT_GT(meta.at("cpu_min").get<double>(), 0);
 
     const ReadBack n = checkValidateOutput(out, true);
-    // Quick run: 4 time histories, 6 sweeps, 1 steady; a time-history plot, 2 per sweep case, 1 steady.
-    EXPECT_EQ(n.csvs, 11);
+    // Quick run: 4 time histories, 6 sweeps, 1 steady, 1 orbit branch; a time-history plot, 2 per
+    // sweep case, 1 steady.
+    EXPECT_EQ(n.csvs, 12);
     EXPECT_EQ(n.pngs, 14);
     EXPECT_EQ(n.jsons, n.pngs + 1);
 }

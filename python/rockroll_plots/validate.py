@@ -115,6 +115,15 @@ def plot_steady(out, meta):
                 plot_csv(ax, s["file"], srows, {"direction": direction, "failed": "0"}, "speed_mph",
                          "steady_roll_amplitude_deg", marker=marker, linestyle="none", color=f"C{k}",
                          label=f"{s['model']} sweep {direction}")
+        # Periodic orbits of the time-domain models (section 11), filled where stable.
+        for k, orb in enumerate(o for o in meta.get("orbits", []) if abs(o["amplitude_in"] - st["amplitude_in"]) < 1e-9):
+            _, orows = read_csv(os.path.join(out, orb["file"]))
+            marker = "o" if orb["model"] == "eom" else "s"
+            for stable, fill in (("yes", "full"), ("no", "none")):
+                plot_csv(ax, orb["file"], orows, {"converged": "1", "stable": stable}, "speed_mph",
+                         "roll_amplitude_deg", marker=marker, linestyle="none", color="C3" if k % 2 == 0 else "C4",
+                         fillstyle=fill, markersize=5,
+                         label=f"{orb['model']} periodic orbit, {'stable' if stable == 'yes' else 'unstable'}")
         # Figure 31 holds every amplitude; Figure 34 compares the 0.75 in case alone (report §4.3).
         figs = "Figs 31, 34" if abs(st["amplitude_in"] - 0.75) < 1e-9 else "Fig. 31"
         ax.set_title(f"70-ton loaded, {st['amplitude_in']:.2f} in: describing function over the sweeps ({figs})")

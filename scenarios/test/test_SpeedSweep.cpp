@@ -30,6 +30,29 @@ TEST(SpeedSweep, TrackMotionRampsWithoutJumps) {
     for (double t : {0.3, 0.999, 1.0, 2.0}) EXPECT_NEAR((m.calcDistance(t + h) - m.calcDistance(t - h)) / (2 * h), m.calcSpeed(t), 1e-5);
 }
 
+// A zero ramp is an instantaneous speed step: the new speed from the first instant, the
+// distance continuing without a jump (a run restarted at the new speed, as the report's
+// sweep points were).
+TEST(SpeedSweep, ZeroRampStepsTheSpeedAtOnce) {
+    const TrackMotion m{20.0, 100.0, 15.0, 0.0};
+    EXPECT_DOUBLE_EQ(m.calcSpeed(0), 20.0);
+    EXPECT_DOUBLE_EQ(m.calcDistance(0), 100.0);
+    EXPECT_DOUBLE_EQ(m.calcDistance(2.0), 140.0);
+    SweepSpec s;
+    s.scenario = makeBase("eom", 2);
+    s.fromMph = 14, s.toMph = 15, s.stepMph = 1;
+    s.rampTime = 0;
+    const auto stepped = runSweep(s);
+    s.rampTime = 1;
+    const auto ramped = runSweep(s);
+    ASSERT_EQ(stepped.size(), 2u);
+    EXPECT_EQ(stepped[1].start, "continued");
+    EXPECT_EQ(stepped[1].summary.criteriaFromS, 0.0);
+    EXPECT_NEAR(stepped[1].next.from->distance - stepped[0].next.from->distance, 2 * 15 * units::mph, 1e-9);
+    EXPECT_NEAR(ramped[1].next.from->distance - ramped[0].next.from->distance,
+                (0.5 * (14 + 15) + 15) * units::mph, 1e-9);
+}
+
 TEST(SpeedSweep, ContinuedRunStartsWhereThePreviousEnded) {
     for (const char* model : {"eom", "halfcar", "reduced"}) {
         Scenario a = makeBase(model, 4);

@@ -1,0 +1,400 @@
+// validate, section 11: where the upper branch ends. Periodic orbits of eom and the
+// Simbody half car (70-ton loaded; scenarios/PeriodicOrbit.h, docs/orbits.md),
+// continued down in speed from section 2's down sweeps, beside the sweeps' drops,
+// sweeps whose speed steps at once, the speed step that knocks an orbit off its
+// branch, and the describing function (report §4.3, Figure 31; §3.2, Figure 11).
+#include "app/ValidateSections.h"
+#include "mbmodel/CsvWriter.h"
+#include "scenarios/OrbitContinuation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rockroll::app {
+
+using namespace validate_detail;
+
+namespace {
+constexpr double kLowestMph = 8;
+/// The stepped sweeps' and the basin runs' time at each speed [s].
+constexpr double kStepRunS = 30;
+/// A run ends on the branch when its steady roll amplitude is within this fraction of
+/// the branch's orbit at its speed (the continuation's own "another branch" rule).
+constexpr double kOnBranchFraction = 0.3;
+
+struct OrbitCase {
+    double amplitudeIn;
+    std::string model;
+    double startMph, stepMph;
+};
+
+struct OrbitCaseResult {
+    OrbitCase c;
+    std::string start;          ///< where the start state came from
+    double distance = 0;        ///< s₀ of the orbits [m]
+    OrbitBranch branch;
+    std::string failure;        ///< the case could not start
+    double toMph = kLowestMph;  ///< where the continuation stops at the latest
+    double sweepDropMph = NAN;  ///< section 2's down sweep (ramped), NaN: it never drops or was not swept
+    /// Per orbit speed (eom): the smallest instantaneous speed step down, of kBasinSteps,
+    /// after which the run ends off the branch; NaN: none of them; −1: no step tried (no
+    /// orbit at any new speed to compare with).
+    std::vector<std::pair<double, double>> basin;
+};
+
+const std::vector<double> kBasinSteps{0.5, 1.0, 2.0};
+
+/// The branch's converged orbits, in speed order (descending).
+std::vector<const PeriodicOrbit*> convergedOrbits(const OrbitBranch& b) {
+    std::vector<const PeriodicOrbit*> v;
+    for (const auto& p : b.points)
+        if (p.converged) v.push_back(&p);
+    std::sort(v.begin(), v.end(), [](auto a, auto c) { return a->speedMph > c->speedMph; });
+    return v;
+}
+
+/// The branch's roll amplitude at mph, linear between its orbits; NaN outside them.
+double branchAmplitudeAt(const OrbitBranch& b, double mph) {
+    const auto v = convergedOrbits(b);
+    for (size_t i = 0; i + 1 < v.size(); ++i)
+        if (mph <= v[i]->speedMph + 1e-9 && mph >= v[i + 1]->speedMph - 1e-9) {
+            const double f = (v[i]->speedMph - mph) / (v[i]->speedMph - v[i + 1]->speedMph);
+            return v[i]->rollAmplitudeDeg + f * (v[i + 1]->rollAmplitudeDeg - v[i]->rollAmplitudeDeg);
+        }
+    if (v.size() == 1 && std::abs(v[0]->speedMph - mph) < 1e-9) return v[0]->rollAmplitudeDeg;
+    return NAN;
+}
+
+std::string describeEnd(const OrbitCaseResult& r) {
+    if (!r.failure.empty()) return "not computed: " + r.failure;
+    const OrbitBranch& b = r.branch;
+    if (b.stopReason.rfind("fold", 0) == 0 && b.endBracketMph)
+        return fmt::format("fold between {:.2f} and {:.2f} mph", b.endBracketMph->second, b.endBracketMph->first);
+    if (b.endBracketMph)
+        return fmt::format("branch end between {:.2f} and {:.2f} mph (not a fold: {})", b.endBracketMph->second,
+                           b.endBracketMph->first, b.stopReason);
+    if (b.stopReason == "no orbit at the start speed") return "no orbit at the start speed: " + b.points.front().failure;
+    return fmt::format("no fold down to {:g} mph", r.toMph);
+}
+
+std::string describeBasin(double dv) {
+    return dv < 0 ? std::string("—") : std::isfinite(dv) ? fmt::format("{:g} mph", dv) : std::string("none");
+}
+
+/// The lowest speed of the branch's stable orbits, reached from the start without an unstable orbit between.
+std::string describeStability(const OrbitBranch& b) {
+    const auto v = convergedOrbits(b);
+    if (v.empty()) return "—";
+    std::vector<std::string> parts;
+    size_t i = 0;
+    while (i < v.size()) {
+        size_t j = i;
+        while (j + 1 < v.size() && v[j + 1]->stable == v[i]->stable) ++j;
+        parts.push_back(fmt::format("{} {:.2f}–{:.2f}", v[i]->stable ? "stable" : "unstable", v[i]->speedMph, v[j]->speedMph));
+        i = j + 1;
+    }
+    return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+const SweepResult* findSweep(const std::vector<SweepResult>& sweeps, const std::string& model, double amp) {
+    for (const auto& r : sweeps)
+        if (r.c.car == "70ton-loaded" && r.model == model && std::abs(r.c.amplitudeIn - amp) < 1e-9) return &r;
+    return nullptr;
+}
+}  // namespace
+
+std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
+                             nlohmann::ordered_json& meta) {
+    std::string md = "## 11. Where the upper branch ends: periodic orbits against the sweeps (report Figure 11)\n\n";
+    // Start speeds: on the down sweeps' upper branch at every amplitude (section 2).
+    std::vector<OrbitCase> cases;
+    if (s.quick) {
+        cases.push_back({0.75, model_names::kEom, 14, 0.5});
+    } else {
+        for (const auto& [amp, v0] : std::vector<std::pair<double, double>>{{0.5, 16}, {0.75, 14}, {1.0, 14}}) {
+            cases.push_back({amp, model_names::kEom, v0, 0.5});
+            cases.push_back({amp, model_names::kHalfCar, v0, 1.0});
+        }
+    }
+    const Scenario car = loadCar("70ton-loaded");
+    std::vector<OrbitCaseResult> results(cases.size());
+    std::vector<std::function<void()>> jobs;
+    for (size_t i = 0; i < cases.size(); ++i)
+        jobs.push_back([&, i] {
+            OrbitCaseResult& r = results[i];
+            r.c = cases[i];
+            Scenario sc = car;
+            sc.model = r.c.model;
+            sc.track.amplitude = r.c.amplitudeIn * units::inch;
+            std::optional<RestartState> from;
+            const SweepResult* sw = findSweep(sweeps, r.c.model, r.c.amplitudeIn);
+            if (sw) {
+                r.sweepDropMph = sw->jumpDownMph;
+                for (const auto& p : sw->down)
+                    if (std::abs(p.speedMph - r.c.startMph) < 1e-9 && !p.failed && p.next.from) from = p.next.from;
+                r.start = fmt::format("section 2's down sweep at {:g} mph", r.c.startMph);
+            } else {
+                // The quick run sweeps only the reduced model: a short down sweep of its own.
+                SweepSpec spec;
+                spec.scenario = sc;
+                spec.scenario.run.duration = 15;
+                spec.fromMph = r.c.startMph, spec.toMph = 16.5, spec.stepMph = 0.5;
+                spec.direction = SweepDirection::Down;
+                const auto pts = runSweep(spec);
+                if (!pts.empty() && !pts.back().failed && pts.back().next.from) from = pts.back().next.from;
+                r.start = fmt::format("a down sweep 16.5 → {:g} mph (0.5 mph steps, 15 s a speed)", r.c.startMph);
+            }
+            if (!from) {
+                r.failure = fmt::format("no down-sweep state at {:g} mph", r.c.startMph);
+                return;
+            }
+            r.distance = from->distance;
+            OrbitSettings os;
+            os.shooting.threads = 1;  // the cases run in parallel; the bits do not depend on it
+            os.shooting.maxIterations = 20;
+            const PeriodicOrbitSolver solver(sc, from->distance, os);
+            OrbitContinuationSettings cs;
+            cs.fromMph = r.c.startMph;
+            cs.toMph = r.toMph = s.quick ? 13 : kLowestMph;
+            cs.stepMph = r.c.stepMph;
+            cs.refinements = r.c.model == model_names::kEom ? 2 : 1;
+            r.branch = OrbitContinuation(solver, cs).trace(from->y);
+            if (r.c.model != model_names::kEom) return;
+            // The basin along the branch: from each orbit, the speed stepped down at once by Δ.
+            for (const PeriodicOrbit* o : convergedOrbits(r.branch)) {
+                double smallest = -1;
+                for (double dv : kBasinSteps) {
+                    const double target = branchAmplitudeAt(r.branch, o->speedMph - dv);
+                    if (!std::isfinite(target)) break;
+                    smallest = NAN;
+                    Scenario run = sc;
+                    run.speed = (o->speedMph - dv) * units::mph;
+                    run.run.duration = kStepRunS;
+                    RunStart start;
+                    start.from = RestartState{sc.model, o->y, from->distance, o->speedMph * units::mph};
+                    start.rampTime = 0;
+                    const ScenarioRun out = runScenario(run, start);
+                    const double a = out.result.stop ? 0.0 : out.summary.steadyRollAmplitudeDeg;
+                    if (std::abs(a - target) > kOnBranchFraction * target) {
+                        smallest = dv;
+                        break;
+                    }
+                }
+                r.basin.emplace_back(o->speedMph, smallest);
+            }
+        });
+    runJobs(jobs, s.jobs);
+
+    // Down sweeps whose speed steps at once, beside section 2's ramped ones.
+    struct Stepped {
+        std::string model;
+        double amp, stepMph, dropMph = NAN, lowestRollDeg = NAN;
+    };
+    std::vector<Stepped> stepped;
+    std::vector<SweepSpec> specs;
+    if (!s.quick)
+        for (const char* m : {model_names::kEom, model_names::kHalfCar})
+            for (double amp : {0.75, 1.0})
+                for (double step : {0.5, 1.0}) {
+                    SweepSpec spec;
+                    spec.scenario = car;
+                    spec.scenario.model = m;
+                    spec.scenario.track.amplitude = amp * units::inch;
+                    spec.scenario.run.duration = kStepRunS;
+                    spec.scenario.run.outputRate = 100;
+                    spec.fromMph = 10, spec.toMph = 22, spec.stepMph = step;
+                    spec.direction = SweepDirection::Down;
+                    spec.rampTime = 0;
+                    specs.push_back(spec);
+                    stepped.push_back({m, amp, step});
+                }
+    const auto steppedPoints = runSweeps(specs, s.jobs);
+    for (size_t i = 0; i < stepped.size(); ++i) {
+        stepped[i].dropMph = findSweepJump(steppedPoints[i], SweepDirection::Down).speedMph;
+        if (!steppedPoints[i].empty() && !steppedPoints[i].back().failed)
+            stepped[i].lowestRollDeg = steppedPoints[i].back().summary.steadyRollAmplitudeDeg;
+    }
+
+    // Data: one CSV per case, one row per orbit point computed.
+    for (const auto& r : results) {
+        const std::string file = fmt::format("orbits_70ton-loaded_{:.2f}in_{}.csv", r.c.amplitudeIn, r.c.model);
+        writeAtomically(s.out / file, [&](std::ostream& o) {
+            CsvWriter csv(o, {"speed_mph", "converged", "period", "roll_amplitude_deg", "wheel_lift_fraction",
+                              "max_multiplier", "largest_real_multiplier", "smallest_real_multiplier", "stable"});
+            for (const auto& p : r.branch.points)
+                if (p.converged)
+                    csv.writeRow({CsvCell::fixed(p.speedMph, 4), 1, p.period, CsvCell::fixed(p.rollAmplitudeDeg, 4),
+                                  CsvCell::fixed(p.wheelLiftFraction, 4), CsvCell::fixed(p.maxMultiplier, 4),
+                                  CsvCell::fixed(p.largestRealMultiplier, 4), CsvCell::fixed(p.smallestRealMultiplier, 4),
+                                  p.stable ? "yes" : "no"});
+                else
+                    csv.writeRow({CsvCell::fixed(p.speedMph, 4), 0, 0, "", "", "", "", "", ""});
+        });
+        meta["orbits"].push_back({{"amplitude_in", r.c.amplitudeIn}, {"model", r.c.model}, {"file", file},
+                                  {"end", describeEnd(r)}, {"stop_reason", r.branch.stopReason}});
+    }
+
+    md += fmt::format(
+        "Made like `rockroll orbits scenarios/70ton-loaded.toml --model M --amplitude-in A --from-mph V0 --to-mph {:g} "
+        "--step-mph S` (docs/orbits.md), except that the first shooting starts from {}. Shooting on the one-period map "
+        "at accuracy 1e-7, up to 20 Newton steps (on P, then on P∘P), step halved {} at a failure (eom; the half car "
+        "once); stable when |μ|max ≤ 1.01 (a sticking wedge's neutral multiplier). A branch ends at a fold when its last "
+        "orbit's largest real multiplier is near +1 or a real multiplier crossed +1 between its last two orbits. Data "
+        "`orbits_70ton-loaded_<A>in_<model>.csv`; the orbits are drawn on the describing-function plots of section 5 "
+        "(`steady_70ton-loaded_<A>in.png`). The down sweep's drop (section 2: 0.5 mph steps, 30 s a speed, the speed "
+        "ramped over 1 s) is where its steady roll amplitude falls most.\n\n",
+        s.quick ? 13.0 : kLowestMph,
+        s.quick ? "a short down sweep of eom's own (the quick run sweeps only the reduced model)"
+                : "the state section 2's down sweep reached at V0 (accuracy 1e-4)",
+        "twice");
+    md += "| A, in | model | V0, mph | S, mph | orbits converged | speeds covered, mph | roll amplitude, deg | stability, mph "
+          "| where the branch ends | multiplier events | down sweep drops at (section 2) | the drop beside the branch |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string foldSentence;
+    for (const auto& r : results) {
+        const auto v = convergedOrbits(r.branch);
+        std::vector<std::string> events;
+        for (const auto& e : r.branch.events)
+            if (e.kind != "fold" && e.kind != "branch end")
+                events.push_back(fmt::format("{} {:.2f}–{:.2f}", e.kind, e.fromMph, e.toMph));
+        const bool folded = r.branch.stopReason.rfind("fold", 0) == 0 && r.branch.endBracketMph;
+        std::string verdict;
+        if (v.empty()) {
+            verdict = "no orbit to compare";
+        } else if (std::isfinite(r.sweepDropMph)) {
+            // The drop is between the speed before it and its own (findSweepJump: the lower speed of the pair).
+            const double lowestOrbit = v.back()->speedMph;
+            if (folded)
+                verdict = fmt::format("the sweep falls off between {:.1f} and {:.1f} mph; the branch folds between "
+                                      "{:.2f} and {:.2f} mph: {}",
+                                      r.sweepDropMph + 0.5, r.sweepDropMph, r.branch.endBracketMph->second,
+                                      r.branch.endBracketMph->first,
+                                      r.sweepDropMph <= r.branch.endBracketMph->first + 1e-9
+                                          ? "the drop is at or just below the fold"
+                                          : "the sweep leaves the branch above its fold");
+            else
+                verdict = fmt::format("the sweep falls off at {:.1f} mph where the branch has orbits down to {:.2f} mph: "
+                                      "it leaves the branch above its end",
+                                      r.sweepDropMph, lowestOrbit);
+            // The basin there (eom's: measured on eom only).
+            for (const auto& e : results)
+                if (e.c.model == model_names::kEom && e.c.amplitudeIn == r.c.amplitudeIn)
+                    for (const auto& [sp, dv] : e.basin)
+                        if (std::abs(sp - (r.sweepDropMph + 0.5)) < 1e-9)
+                            verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed step "
+                                                   "down that leaves the branch: {}",
+                                                   sp, describeBasin(dv));
+        } else {
+            verdict = folded ? fmt::format("the sweep never drops, yet the branch folds at {:.2f}–{:.2f} mph",
+                                           r.branch.endBracketMph->second, r.branch.endBracketMph->first)
+                             : "the sweep never drops and the branch does not end: consistent";
+        }
+        md += fmt::format("| {:.2f} | {} | {:g} | {:g} | {} of {} | {} | {} | {} | {} | {} | {} | {} |\n", r.c.amplitudeIn,
+                          r.c.model, r.c.startMph, r.c.stepMph, v.size(), r.branch.points.size(),
+                          v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.back()->speedMph, v.front()->speedMph),
+                          v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.front()->rollAmplitudeDeg, v.back()->rollAmplitudeDeg),
+                          describeStability(r.branch), describeEnd(r),
+                          events.empty() ? "none" : fmt::format("{}", fmt::join(events, "; ")),
+                          std::isfinite(r.sweepDropMph) ? fmt::format("{:.1f} mph", r.sweepDropMph) : "never", verdict);
+    }
+
+    // eom against the half car: the fold (or the lowest orbit) of each.
+    md += "\n**eom against the Simbody half car** (its twin): ";
+    std::vector<std::string> twins;
+    for (double amp : {0.5, 0.75, 1.0}) {
+        const OrbitCaseResult *e = nullptr, *h = nullptr;
+        for (const auto& r : results)
+            if (std::abs(r.c.amplitudeIn - amp) < 1e-9) (r.c.model == model_names::kEom ? e : h) = &r;
+        if (!e || !h) continue;
+        twins.push_back(fmt::format("{:.2f} in: eom {}, half car {}", amp, describeEnd(*e), describeEnd(*h)));
+        // Roll amplitude at the speeds both have.
+        double worst = 0;
+        for (const PeriodicOrbit* p : convergedOrbits(h->branch)) {
+            const double a = branchAmplitudeAt(e->branch, p->speedMph);
+            if (std::isfinite(a)) worst = std::max(worst, std::abs(p->rollAmplitudeDeg - a) / a);
+        }
+        twins.back() += fmt::format(" (roll amplitudes at the half car's speeds within {:.2f} %)", 100 * worst);
+    }
+    md += twins.empty() ? "not computed in the quick run.\n\n" : fmt::format("{}.\n\n", fmt::join(twins, "; "));
+
+    // The basin along the branch.
+    md += fmt::format("**How easily a speed step knocks an orbit off the upper branch (eom).** From each orbit, the speed "
+                      "steps down at once by Δ = {} mph and the run goes on {:g} s; it counts as off the branch when its "
+                      "steady roll amplitude differs from the branch's orbit at the new speed by more than {:g} %. The "
+                      "cell gives the smallest such Δ (\"none\": it stays on the branch for every Δ tried, \"—\": no orbit "
+                      "at the new speed to compare with).\n\n| A, in | speed mph: smallest Δ that drops |\n|---|---|\n",
+                      fmt::join(kBasinSteps, ", "), kStepRunS, 100 * kOnBranchFraction);
+    for (const auto& r : results) {
+        if (r.c.model != model_names::kEom) continue;
+        std::vector<std::string> cells;
+        for (const auto& [v, dv] : r.basin)
+            cells.push_back(fmt::format("{:g}: {}", v, describeBasin(dv)));
+        md += fmt::format("| {:.2f} | {} |\n", r.c.amplitudeIn, cells.empty() ? "—" : fmt::format("{}", fmt::join(cells, "; ")));
+    }
+
+    // Stepped sweeps.
+    if (!stepped.empty()) {
+        md += fmt::format("\n**Down sweeps whose speed steps at once** (`rockroll sweep scenarios/70ton-loaded.toml --model M "
+                          "--amplitude-in A --from-mph 10 --to-mph 22 --step-mph S --duration-s {:g} --direction down "
+                          "--speed-ramp-s 0`), the way a run restarted at a new speed from the last state changes speed, "
+                          "beside section 2's ramped sweeps:\n\n| A, in | model | ramped, 0.5 mph steps: drop | stepped, 0.5 mph: "
+                          "drop | stepped, 1 mph: drop | steady roll at 10 mph, stepped 0.5 / 1 mph, deg |\n|---|---|---|---|---|---|\n",
+                          kStepRunS);
+        for (const char* m : {model_names::kEom, model_names::kHalfCar})
+            for (double amp : {0.75, 1.0}) {
+                const SweepResult* sw = findSweep(sweeps, m, amp);
+                const Stepped *half = nullptr, *one = nullptr;
+                for (const auto& st : stepped)
+                    if (st.model == m && st.amp == amp) (st.stepMph == 0.5 ? half : one) = &st;
+                auto drop = [](double v) { return std::isfinite(v) ? fmt::format("{:.1f} mph", v) : std::string("none"); };
+                md += fmt::format("| {:.2f} | {} | {} | {} | {} | {:.2f} / {:.2f} |\n", amp, m,
+                                  sw ? drop(sw->jumpDownMph) : "—", drop(half->dropMph), drop(one->dropMph),
+                                  half->lowestRollDeg, one->lowestRollDeg);
+            }
+    }
+
+    // The report's 13.5 mph drop (Figure 11, 1.0 in), from the numbers above.
+    for (const auto& r : results)
+        if (std::abs(r.c.amplitudeIn - 1.0) < 1e-9 && r.c.model == model_names::kEom) {
+            const auto v = convergedOrbits(r.branch);
+            double stableBelow = NAN;
+            for (const PeriodicOrbit* p : v) {
+                if (!p->stable) break;
+                stableBelow = p->speedMph;
+            }
+            double basin135 = NAN;
+            bool have135 = false;
+            for (const auto& [sp, dv] : r.basin)
+                if (std::abs(sp - 13.5) < 1e-9 && !(dv < 0)) have135 = true, basin135 = dv;
+            foldSentence = fmt::format(
+                "\n**The report's drop at 13.5 mph (Figure 11, 1.0 in).** eom's upper branch at 1.0 in: {}; its orbits are "
+                "stable from {:g} down to {} mph without a break{}. So in this model the drop at 13.5 mph is not the "
+                "end of the branch. {}",
+                describeEnd(r), r.c.startMph, std::isfinite(stableBelow) ? fmt::format("{:.2f}", stableBelow) : "—",
+                v.empty() ? "" : fmt::format(" (roll amplitude {:.2f}° at {:g} mph)", v.front()->rollAmplitudeDeg, v.front()->speedMph),
+                have135 ? (std::isfinite(basin135)
+                               ? fmt::format("From its orbit at 13.5 mph, a speed step of {:g} mph at once knocks it off "
+                                             "the branch, so a run restarted at a speed {:g} mph lower can drop there.",
+                                             basin135, basin135)
+                               : fmt::format("From its orbit at 13.5 mph, no speed step up to {:g} mph at once knocks it "
+                                             "off the branch.",
+                                             kBasinSteps.back()))
+                        : std::string(""));
+            for (const auto& st : stepped)
+                if (st.model == std::string(model_names::kEom) && st.amp == 1.0)
+                    foldSentence += fmt::format(" Swept down with the speed stepped at once in {:g} mph steps it {}.",
+                                                st.stepMph,
+                                                std::isfinite(st.dropMph) ? fmt::format("drops at {:.1f} mph", st.dropMph)
+                                                                          : "never drops");
+            foldSentence += " The report computed its points \"from initial conditions of lower speed ... as well as "
+                            "from higher speed\" (§3.2) and does not say how the speed changed between them; what made "
+                            "its simulation leave the branch at 13.5 mph is not measured here.\n";
+        }
+    md += foldSentence;
+    (void)steady;
+    return md + "\n";
+}
+
+}  // namespace rockroll::app
