@@ -1,5 +1,5 @@
 #pragma once
-// rockroll plot DIR: the plots of a run, sweep, steady, modes or study output
+// rockroll plot DIR: the plots of a run, sweep, steady, modes, study or orbits output
 // directory, drawn by the project's plotting package python/rockroll_plots
 // (matplotlib) into DIR/plots/, PNG and SVG. Also the runner validate draws its
 // report's plots with.

@@ -37,7 +37,9 @@ struct OrbitCaseResult {
     OrbitBranch branch;
     std::string failure;        ///< the case could not start
     double toMph = kLowestMph;  ///< where the continuation stops at the latest
-    double sweepDropMph = NAN;  ///< section 2's down sweep (ramped), NaN: it never drops or was not swept
+    bool swept = false;         ///< section 2 swept this model and amplitude
+    double sweepDropMph = NAN;  ///< section 2's down sweep (ramped), NaN: it never drops by kOnBranchFraction
+    double sweepLargestFallDeg = 0, sweepLargestFallMph = NAN;  ///< its largest fall between neighbouring speeds
     /// Per orbit speed (eom): the smallest instantaneous speed step down, of kBasinSteps,
     /// after which the run ends off the branch; NaN: none of them; −1: no step tried (no
     /// orbit at any new speed to compare with).
@@ -98,6 +100,18 @@ std::string describeStability(const OrbitBranch& b) {
     return fmt::format("{}", fmt::join(parts, "; "));
 }
 
+/// The speed after a down sweep's largest fall of the steady roll amplitude between
+/// neighbouring speeds when that fall is more than kOnBranchFraction of the amplitude
+/// before it; NaN otherwise (a smaller fall stays on the branch).
+double findDrop(const std::vector<SweepPoint>& down) {
+    const SweepJump j = findSweepJump(down, SweepDirection::Down);
+    for (size_t k = 1; k < down.size(); ++k)
+        if (down[k].speedMph == j.speedMph && !down[k - 1].failed &&
+            j.changeDeg > kOnBranchFraction * down[k - 1].summary.steadyRollAmplitudeDeg)
+            return j.speedMph;
+    return NAN;
+}
+
 const SweepResult* findSweep(const std::vector<SweepResult>& sweeps, const std::string& model, double amp) {
     for (const auto& r : sweeps)
         if (r.c.car == "70ton-loaded" && r.model == model && std::abs(r.c.amplitudeIn - amp) < 1e-9) return &r;
@@ -131,7 +145,12 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             std::optional<RestartState> from;
             const SweepResult* sw = findSweep(sweeps, r.c.model, r.c.amplitudeIn);
             if (sw) {
-                r.sweepDropMph = sw->jumpDownMph;
+                // A drop is a fall between neighbouring speeds of more than kOnBranchFraction of the
+                // amplitude before it (a smaller fall stays on the branch).
+                r.swept = true;
+                const SweepJump j = findSweepJump(sw->down, SweepDirection::Down);
+                r.sweepLargestFallDeg = j.changeDeg, r.sweepLargestFallMph = j.speedMph;
+                r.sweepDropMph = findDrop(sw->down);
                 for (const auto& p : sw->down)
                     if (std::abs(p.speedMph - r.c.startMph) < 1e-9 && !p.failed && p.next.from) from = p.next.from;
                 r.start = fmt::format("section 2's down sweep at {:g} mph", r.c.startMph);
@@ -212,7 +231,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 }
     const auto steppedPoints = runSweeps(specs, s.jobs);
     for (size_t i = 0; i < stepped.size(); ++i) {
-        stepped[i].dropMph = findSweepJump(steppedPoints[i], SweepDirection::Down).speedMph;
+        stepped[i].dropMph = findDrop(steppedPoints[i]);
         if (!steppedPoints[i].empty() && !steppedPoints[i].back().failed)
             stepped[i].lowestRollDeg = steppedPoints[i].back().summary.steadyRollAmplitudeDeg;
     }
@@ -244,7 +263,8 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         "orbit's largest real multiplier is near +1 or a real multiplier crossed +1 between its last two orbits. Data "
         "`orbits_70ton-loaded_<A>in_<model>.csv`; the orbits are drawn on the describing-function plots of section 5 "
         "(`steady_70ton-loaded_<A>in.png`). The down sweep's drop (section 2: 0.5 mph steps, 30 s a speed, the speed "
-        "ramped over 1 s) is where its steady roll amplitude falls most.\n\n",
+        "ramped over 1 s) is its largest fall of the steady roll amplitude between neighbouring speeds, counted as "
+        "a drop when it is more than 30 % of the amplitude before it.\n\n",
         s.quick ? 13.0 : kLowestMph,
         s.quick ? "a short down sweep of eom's own (the quick run sweeps only the reduced model)"
                 : "the state section 2's down sweep reached at V0 (accuracy 1e-4)",
@@ -286,6 +306,8 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                             verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed step "
                                                    "down that leaves the branch: {}",
                                                    sp, describeBasin(dv));
+        } else if (!r.swept) {
+            verdict = "not swept in this run";
         } else {
             verdict = folded ? fmt::format("the sweep never drops, yet the branch folds at {:.2f}–{:.2f} mph",
                                            r.branch.endBracketMph->second, r.branch.endBracketMph->first)
@@ -297,7 +319,13 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.front()->rollAmplitudeDeg, v.back()->rollAmplitudeDeg),
                           describeStability(r.branch), describeEnd(r),
                           events.empty() ? "none" : fmt::format("{}", fmt::join(events, "; ")),
-                          std::isfinite(r.sweepDropMph) ? fmt::format("{:.1f} mph", r.sweepDropMph) : "never", verdict);
+                          !r.swept                      ? std::string("—")
+                          : std::isfinite(r.sweepDropMph) ? fmt::format("{:.1f} mph", r.sweepDropMph)
+                          : std::isfinite(r.sweepLargestFallMph)
+                              ? fmt::format("never (largest fall {:.2f}° at {:g} mph)", r.sweepLargestFallDeg,
+                                            r.sweepLargestFallMph)
+                              : std::string("never"),
+                          verdict);
     }
 
     // eom against the half car: the fold (or the lowest orbit) of each.
@@ -350,7 +378,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                     if (st.model == m && st.amp == amp) (st.stepMph == 0.5 ? half : one) = &st;
                 auto drop = [](double v) { return std::isfinite(v) ? fmt::format("{:.1f} mph", v) : std::string("none"); };
                 md += fmt::format("| {:.2f} | {} | {} | {} | {} | {:.2f} / {:.2f} |\n", amp, m,
-                                  sw ? drop(sw->jumpDownMph) : "—", drop(half->dropMph), drop(one->dropMph),
+                                  sw ? drop(findDrop(sw->down)) : "—", drop(half->dropMph), drop(one->dropMph),
                                   half->lowestRollDeg, one->lowestRollDeg);
             }
     }

@@ -245,7 +245,7 @@ int main(int argc, char** argv) {
 
     app::PlotOptions plot;
     CLI::App* plotCmd = cli.add_subcommand(
-        "plot", "plot a run, sweep, steady, modes or study output directory into DIR/plots/ (PNG and SVG, matplotlib "
+        "plot", "plot a run, sweep, steady, modes, study or orbits output directory into DIR/plots/ (PNG and SVG, matplotlib "
                 "under ROCKROLL_PYTHON, default /usr/bin/python3)");
     plotCmd->add_option("dir", plot.dir, "the output directory (written by --out)")->required()->check(CLI::ExistingDirectory);
     plotCmd->add_flag("--force", plot.force, "replace an existing non-empty DIR/plots");

@@ -4,6 +4,7 @@
 // Every model run releases the GIL, so Python threads run models in parallel.
 #include "app/BuildInfo.h"
 #include "app/CommandResults.h"
+#include "app/OrbitsResults.h"
 #include "app/Provenance.h"
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
@@ -12,6 +13,7 @@
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -298,6 +300,43 @@ PYBIND11_MODULE(_rockroll, m) {
         },
         py::arg("scenario"), py::arg("amplitude_in"), py::arg("from_mph"), py::arg("to_mph"), py::arg("stability"),
         py::arg("twin_periods"), py::arg("sweep_starts"), py::arg("command"));
+
+    m.def(
+        "_orbits",
+        [](Scenario sc, std::optional<std::string> model, std::optional<double> amplitudeIn, double fromMph,
+           double toMph, double stepMph, double startDurationS, std::optional<double> startSweepFromMph,
+           double startRampS, double accuracy, int refinements, int newtonSteps, int jobs, const std::string& command) {
+            app::OrbitsOptions o;  // the options of `rockroll orbits`
+            o.scenario = sc.source;
+            o.model = model;
+            o.amplitudeIn = amplitudeIn;
+            o.fromMph = fromMph, o.toMph = toMph, o.stepMph = stepMph;
+            o.startDurationS = startDurationS;
+            o.startSweepFromMph = startSweepFromMph;
+            o.startRampS = startRampS;
+            o.accuracy = accuracy;
+            o.refinements = refinements;
+            o.newtonSteps = newtonSteps;
+            o.jobs = jobs;
+            o.json = true;  // no progress lines
+            if (model) sc.model = *model;
+            if (amplitudeIn) {
+                if (!sc.track.measured.empty())
+                    throw ScenarioError(fmt::format("amplitude_in: {} has a measured track, which has no rectified-sine "
+                                                    "amplitude; expected amplitude_in=None",
+                                                    sc.source));
+                sc.track.amplitude = *amplitudeIn * units::inch;
+            }
+            app::OrbitsResult r;
+            {
+                ReleasedRun released;
+                r = app::calcOrbits(sc, o, command);
+            }
+            return toPython(r.doc);
+        },
+        py::arg("scenario"), py::arg("model"), py::arg("amplitude_in"), py::arg("from_mph"), py::arg("to_mph"),
+        py::arg("step_mph"), py::arg("start_duration_s"), py::arg("start_sweep_from_mph"), py::arg("start_speed_ramp_s"),
+        py::arg("accuracy"), py::arg("refinements"), py::arg("newton_steps"), py::arg("jobs"), py::arg("command"));
 
     m.def(
         "_modes",

@@ -181,6 +181,18 @@ TEST(PlotCommand, Steady) {
                                {"steady.csv", "speed_mph", "wheel_lift_fraction", 1.0}}));
 }
 
+TEST(PlotCommand, Orbits) {
+    const fs::path dir = rockroll::test::makeTestTempDir();
+    const CliOutcome orbits = runRockroll(dir, "orbits '" + kScenario + "' --model eom --amplitude-in 0.25 --from-mph 12 "
+                                               "--to-mph 11.75 --step-mph 0.25 --start-duration-s 10 --out orbits");
+    ASSERT_EQ(orbits.exitCode, 0) << orbits.err;
+    const auto sidecars = plotAndReadBack(dir / "orbits");
+    ASSERT_EQ(sidecars.count("orbits.png"), 1u);
+    EXPECT_EQ(drawnLines(sidecars.at("orbits.png")),
+              (std::set<Drawn>{{"orbits.csv", "speed_mph", "roll_amplitude_deg", 1.0},
+                               {"orbits.csv", "speed_mph", "max_multiplier", 1.0}}));
+}
+
 TEST(PlotCommand, Modes) {
     const fs::path dir = rockroll::test::makeTestTempDir();
     const CliOutcome modes = runRockroll(dir, "modes '" + kScenario + "' --model halfcar --out modes");

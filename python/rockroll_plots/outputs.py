@@ -1,5 +1,5 @@
 """`rockroll plot DIR`: the plots of one output directory of `rockroll run`, `sweep`,
-`steady`, `modes` or `study`, each as PNG and SVG with its sidecar (figures.save).
+`steady`, `modes`, `study` or `orbits`, each as PNG and SVG with its sidecar (figures.save).
 The kind of output is told by the files it holds (KINDS)."""
 import math
 import os
@@ -12,7 +12,7 @@ from .figures import BadInput, finish, mark_x, plot_csv, read_csv, read_json, sa
 # The files each kind of output directory holds, in the order they are looked for.
 KINDS = (("run", ("history.csv", "summary.json")), ("sweep", ("sweep.csv", "sweep.json")),
          ("steady", ("steady.csv", "steady.json")), ("modes", ("modes.csv", "modes.json")),
-         ("study", ("study.csv", "study.json")))
+         ("study", ("study.csv", "study.json")), ("orbits", ("orbits.csv", "orbits.json")))
 FORMATS = ("png", "svg")
 KLB = 1e-3  # lb -> 1000 lb on the axes
 
@@ -307,7 +307,33 @@ def plot_study(out, dest):
         _write(fig, dest, f"study_{safe}.png")
 
 
-PLOTTERS = {"run": plot_run, "sweep": plot_sweep, "steady": plot_steady, "modes": plot_modes, "study": plot_study}
+def plot_orbits(out, dest):
+    """The periodic orbits' roll amplitude and largest multiplier modulus against speed,
+    filled where stable, open where not; points that did not converge draw nothing."""
+    f = "orbits.csv"
+    header, rows = read_csv(os.path.join(out, f))
+    doc = read_json(os.path.join(out, "orbits.json"))
+    _need(header, f, ("speed_mph", "converged", "roll_amplitude_deg", "max_multiplier", "stable"))
+    fig, (ax, axm) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for stable, fill in (("yes", "full"), ("no", "none")):
+        for a, y in ((ax, "roll_amplitude_deg"), (axm, "max_multiplier")):
+            plot_csv(a, f, rows, {"converged": "true", "stable": stable}, "speed_mph", y, color="k", marker="o",
+                     linestyle="none", fillstyle=fill,
+                     label=("stable" if stable == "yes" else "unstable") if a is ax else None)
+    axm.axhline(1.0, color="0.5", linewidth=0.8)
+    amp = doc.get("amplitude_in")
+    ax.set_title(f"periodic orbits, {doc.get('model', '?')}, {doc.get('car', '?')}"
+                 + (f", {amp:.2f} in" if isinstance(amp, (int, float)) else "") + f": {doc.get('stop_reason', '')}")
+    ax.set_ylabel("roll amplitude [deg]")
+    axm.set_ylabel("largest |multiplier|")
+    axm.set_xlabel("speed [mph]")
+    ax.legend(fontsize=8)
+    finish([ax, axm])
+    _write(fig, dest, "orbits.png")
+
+
+PLOTTERS = {"run": plot_run, "sweep": plot_sweep, "steady": plot_steady, "modes": plot_modes, "study": plot_study,
+            "orbits": plot_orbits}
 
 
 def plot_output(out, dest):

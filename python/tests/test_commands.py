@@ -1,4 +1,4 @@
-"""rockroll.sweep, steady and modes: the data their `--json` command lines print."""
+"""rockroll.sweep, steady, orbits and modes: the data their `--json` command lines print."""
 import pytest
 import rockroll
 
@@ -47,3 +47,18 @@ def test_modes_is_the_command_lines(cli_json):
     assert result["modes"][0]["frequency_hz"] > 0
     with pytest.raises(rockroll.ScenarioError, match="modes need a Simbody model"):
         rockroll.modes(LOADED, model="eom")
+
+
+def test_orbits_is_the_command_lines(cli_json):
+    args = dict(model="eom", amplitude_in=0.25, from_mph=12, to_mph=11.75, step_mph=0.25, start_duration_s=10)
+    result = rockroll.orbits(LOADED, **args)
+    expected = cli_json("orbits", LOADED, "--model", "eom", "--amplitude-in", 0.25, "--from-mph", 12, "--to-mph", 11.75,
+                        "--step-mph", 0.25, "--start-duration-s", 10)
+    strip = lambda j: {k: v for k, v in without_run_specifics(j).items() if k not in ("points", "start")}
+    assert strip(result) == strip(expected)
+    assert [p["roll_amplitude_deg"] for p in result["points"]] == [p["roll_amplitude_deg"] for p in expected["points"]]
+    assert [p["speed_mph"] for p in result["points"]] == [12, 11.75]
+    with pytest.raises(rockroll.ScenarioError, match="state cannot be shot"):
+        rockroll.orbits(LOADED, model="reduced", from_mph=12, to_mph=11)
+    with pytest.raises(ValueError, match="newton_steps"):
+        rockroll.orbits(LOADED, from_mph=12, to_mph=11, newton_steps=0)
