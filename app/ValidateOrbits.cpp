@@ -86,7 +86,7 @@ std::string describeBasin(double dv) {
 }
 
 /// The lowest speed of the branch's stable orbits, reached from the start without an unstable orbit between.
-std::string describeStability(const OrbitBranch& b) {
+std::string describeOrbitStability(const OrbitBranch& b) {
     const auto v = convergedOrbits(b);
     if (v.empty()) return "—";
     std::vector<std::string> parts;
@@ -217,6 +217,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         for (const char* m : {model_names::kEom, model_names::kHalfCar})
             for (double amp : {0.75, 1.0})
                 for (double step : {0.5, 1.0}) {
+                    if (std::string(m) == model_names::kHalfCar && step == 0.5) continue;  // eom's column stands for it
                     SweepSpec spec;
                     spec.scenario = car;
                     spec.scenario.model = m;
@@ -286,26 +287,25 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         } else if (std::isfinite(r.sweepDropMph)) {
             // The drop is between the speed before it and its own (findSweepJump: the lower speed of the pair).
             const double lowestOrbit = v.back()->speedMph;
-            if (folded)
-                verdict = fmt::format("the sweep falls off between {:.1f} and {:.1f} mph; the branch folds between "
-                                      "{:.2f} and {:.2f} mph: {}",
-                                      r.sweepDropMph + 0.5, r.sweepDropMph, r.branch.endBracketMph->second,
-                                      r.branch.endBracketMph->first,
-                                      r.sweepDropMph <= r.branch.endBracketMph->first + 1e-9
-                                          ? "the drop is at or just below the fold"
-                                          : "the sweep leaves the branch above its fold");
-            else
-                verdict = fmt::format("the sweep falls off at {:.1f} mph where the branch has orbits down to {:.2f} mph: "
-                                      "it leaves the branch above its end",
-                                      r.sweepDropMph, lowestOrbit);
-            // The basin there (eom's: measured on eom only).
-            for (const auto& e : results)
-                if (e.c.model == model_names::kEom && e.c.amplitudeIn == r.c.amplitudeIn)
-                    for (const auto& [sp, dv] : e.basin)
-                        if (std::abs(sp - (r.sweepDropMph + 0.5)) < 1e-9)
-                            verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed step "
-                                                   "down that leaves the branch: {}",
-                                                   sp, describeBasin(dv));
+            // The sweep's drop lies between its speed before (drop + step) and the drop speed.
+            const double before = r.sweepDropMph + s.sweepStep;
+            const bool ends = r.branch.endBracketMph.has_value();
+            const bool atEnd = ends && r.sweepDropMph <= r.branch.endBracketMph->first + 1e-9;
+            verdict = fmt::format("the sweep falls off between {:g} and {:g} mph; ", before, r.sweepDropMph);
+            verdict += ends ? fmt::format("the branch {} between {:.2f} and {:.2f} mph", folded ? "folds" : "ends",
+                                          r.branch.endBracketMph->second, r.branch.endBracketMph->first)
+                            : fmt::format("the branch has orbits down to {:.2f} mph", lowestOrbit);
+            verdict += atEnd ? ": the drop is at or just below the branch's end"
+                             : ": the sweep leaves the branch above its end";
+            // Where it leaves above the end: the basin there (measured on eom only).
+            if (!atEnd)
+                for (const auto& e : results)
+                    if (e.c.model == model_names::kEom && e.c.amplitudeIn == r.c.amplitudeIn)
+                        for (const auto& [sp, dv] : e.basin)
+                            if (std::abs(sp - before) < 1e-9)
+                                verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed "
+                                                       "step down that leaves the branch: {}",
+                                                       sp, describeBasin(dv));
         } else if (!r.swept) {
             verdict = "not swept in this run";
         } else {
@@ -317,7 +317,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                           r.c.model, r.c.startMph, r.c.stepMph, v.size(), r.branch.points.size(),
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.back()->speedMph, v.front()->speedMph),
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.front()->rollAmplitudeDeg, v.back()->rollAmplitudeDeg),
-                          describeStability(r.branch), describeEnd(r),
+                          describeOrbitStability(r.branch), describeEnd(r),
                           events.empty() ? "none" : fmt::format("{}", fmt::join(events, "; ")),
                           !r.swept                      ? std::string("—")
                           : std::isfinite(r.sweepDropMph) ? fmt::format("{:.1f} mph", r.sweepDropMph)
@@ -377,10 +377,52 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 for (const auto& st : stepped)
                     if (st.model == m && st.amp == amp) (st.stepMph == 0.5 ? half : one) = &st;
                 auto drop = [](double v) { return std::isfinite(v) ? fmt::format("{:.1f} mph", v) : std::string("none"); };
-                md += fmt::format("| {:.2f} | {} | {} | {} | {} | {:.2f} / {:.2f} |\n", amp, m,
-                                  sw ? drop(findDrop(sw->down)) : "—", drop(half->dropMph), drop(one->dropMph),
-                                  half->lowestRollDeg, one->lowestRollDeg);
+                md += fmt::format("| {:.2f} | {} | {} | {} | {} | {} / {:.2f} |\n", amp, m,
+                                  sw ? drop(findDrop(sw->down)) : "—", half ? drop(half->dropMph) : "not run",
+                                  drop(one->dropMph), half ? fmt::format("{:.2f}", half->lowestRollDeg) : "—",
+                                  one->lowestRollDeg);
             }
+    }
+
+    // The describing function against eom's exact orbits, speed by speed.
+    {
+        md += "\n**The describing function against eom's orbits** (section 5's solution set; the roll amplitude of each "
+              "is half its peak-to-peak roll). At each whole-mph speed of eom's upper branch: the describing-function "
+              "solution nearest the orbit's amplitude, its labelled stability, and the amplitude of its time-domain "
+              "twin's last period when the twin stayed on it (5 periods from the solution: the describing function's "
+              "own truncation error, without eom's §4.1 differences). A dash: no solution at that speed.\n\n"
+              "| A, in | speed, mph | eom orbit, deg (stability) | describing function nearest, deg (stability) | "
+              "difference | its twin, deg | truncation (DF − twin) / twin |\n|---|---|---|---|---|---|---|\n";
+        int rows = 0;
+        for (const auto& r : results) {
+            if (r.c.model != model_names::kEom || !steady.count(r.c.amplitudeIn)) continue;
+            const SteadyStateSet& set = steady.at(r.c.amplitudeIn);
+            for (const PeriodicOrbit* p : convergedOrbits(r.branch)) {
+                if (std::abs(p->speedMph - std::round(p->speedMph)) > 1e-9) continue;
+                std::optional<SteadyAt> nearest;
+                for (const SteadyAt& v : findAllSteadyAt(set, p->speedMph))
+                    if (!nearest || std::abs(v.rollAmplitudeDeg - p->rollAmplitudeDeg) <
+                                        std::abs(nearest->rollAmplitudeDeg - p->rollAmplitudeDeg))
+                        nearest = v;
+                const std::string orbit =
+                    fmt::format("{:.2f} ({})", p->rollAmplitudeDeg, p->stable ? "stable" : "unstable");
+                ++rows;
+                if (!nearest) {
+                    md += fmt::format("| {:.2f} | {:g} | {} | — | — | — | — |\n", r.c.amplitudeIn, p->speedMph, orbit);
+                    continue;
+                }
+                const bool twin = nearest->twin.computed && nearest->twin.stayed();
+                md += fmt::format("| {:.2f} | {:g} | {} | {:.2f} ({}) | {:+.1f} % | {} | {} |\n", r.c.amplitudeIn,
+                                  p->speedMph, orbit, nearest->rollAmplitudeDeg, describeStability(nearest->stability),
+                                  100 * (nearest->rollAmplitudeDeg - p->rollAmplitudeDeg) / p->rollAmplitudeDeg,
+                                  twin ? fmt::format("{:.2f}", nearest->twin.rollAmplitudeDeg) : "left it or not run",
+                                  twin ? fmt::format("{:+.1f} %", 100 * (nearest->rollAmplitudeDeg -
+                                                                         nearest->twin.rollAmplitudeDeg) /
+                                                                      nearest->twin.rollAmplitudeDeg)
+                                       : "—");
+            }
+        }
+        if (rows == 0) md += "| — | — | no eom orbit at a whole-mph speed | — | — | — | — |\n";
     }
 
     // The report's 13.5 mph drop (Figure 11, 1.0 in), from the numbers above.
@@ -421,7 +463,6 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                             "its simulation leave the branch at 13.5 mph is not measured here.\n";
         }
     md += foldSentence;
-    (void)steady;
     return md + "\n";
 }
 

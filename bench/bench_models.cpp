@@ -8,6 +8,8 @@
 #include "scenarios/ScenarioRun.h"
 
 #include "bespoke/ReducedHalfCarModel.h"
+#include "scenarios/PeriodicOrbit.h"
+#include "scenarios/SpeedSweep.h"
 
 #include <benchmark/benchmark.h>
 #include <chrono>
@@ -56,6 +58,34 @@ void runCase(benchmark::State& state, const std::string& model, const std::strin
     state.counters["max_roll_deg"] = m.maxRoll;
     state.counters["steps"] = double(m.steps);
     state.counters["realizations"] = double(m.realizations);
+}
+// Cost of one periodic-orbit point (docs/orbits.md): shooting on the upper branch at
+// 13.5 mph, 70-ton loaded, 0.75 in, from the state a down sweep 16.5 → 14 mph reached
+// (0.5 mph steps, 20 s a speed; outside the timing), one thread for the monodromy.
+std::map<std::string, double> gOrbitCpuS;
+void orbitPoint(benchmark::State& state, const std::string& model) {
+    Scenario sc = getDefaultScenario();
+    sc.model = model;
+    SweepSpec spec;
+    spec.scenario = sc;
+    spec.scenario.run.duration = 20;
+    spec.fromMph = 14, spec.toMph = 16.5, spec.stepMph = 0.5;
+    spec.direction = SweepDirection::Down;
+    const std::vector<SweepPoint> sweep = runSweep(spec);
+    const RestartState start = *sweep.back().next.from;
+    OrbitSettings os;
+    os.shooting.threads = 1;
+    os.shooting.maxIterations = 20;
+    const PeriodicOrbitSolver solver(sc, start.distance, os);
+    PeriodicOrbit o;
+    const std::clock_t c0 = std::clock();
+    for (auto _ : state) o = solver.solve(13.5, start.y);
+    gOrbitCpuS[model] = double(std::clock() - c0) / CLOCKS_PER_SEC / double(state.iterations());
+    state.counters["converged"] = o.converged ? 1 : 0;
+    state.counters["roll_amplitude_deg"] = o.rollAmplitudeDeg;
+    state.counters["newton_steps"] = o.iterations;
+    state.counters["map_evaluations"] = o.mapEvaluations;
+    state.counters["cpu_s_per_map"] = gOrbitCpuS[model] / o.mapEvaluations;
 }
 // Cost of one right-hand-side evaluation: realize a perturbed state through
 // Acceleration, with every force element enabled or with all of them disabled
@@ -110,6 +140,11 @@ int main(int argc, char** argv) {
             benchmark::RegisterBenchmark(
                 fmt::format("realize/{}/{}", model, withForces ? "all_elements" : "elements_disabled").c_str(),
                 [m = model, withForces](benchmark::State& s) { realizeCost(s, m, withForces); });
+    for (const char* model : {model_names::kEom, model_names::kHalfCar})
+        benchmark::RegisterBenchmark(fmt::format("orbit/{}", model).c_str(),
+                                     [m = std::string(model)](benchmark::State& s) { orbitPoint(s, m); })
+            ->Iterations(1)
+            ->Unit(benchmark::kSecond);
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
 
@@ -162,6 +197,10 @@ int main(int argc, char** argv) {
                    r.simTime, wall, cpu, r.simTime / cpu, st.modes.searches, st.modes.solves,
                    double(st.modes.solves) / double(st.modes.searches), st.modes.skipped, st.modes.enumerations);
     }
+    if (gOrbitCpuS.count(model_names::kEom) && gOrbitCpuS.count(model_names::kHalfCar))
+        fmt::print("\norbit point at 13.5 mph (CPU s): eom {:.2f}, halfcar {:.2f}; halfcar / eom {:.2f}x\n",
+                   gOrbitCpuS[model_names::kEom], gOrbitCpuS[model_names::kHalfCar],
+                   gOrbitCpuS[model_names::kHalfCar] / gOrbitCpuS[model_names::kEom]);
     fmt::print("\nratios (same run):\n");
     ratio("halfcar cpodes 0.0001", "fullcar cpodes 0.0001");
     ratio("halfcar cpodes 0.0001", "halfcar rkmerson 0.0001");
