@@ -33,7 +33,6 @@ struct OrbitCase {
 struct OrbitCaseResult {
     OrbitCase c;
     std::string start;          ///< where the start state came from
-    double distance = 0;        ///< s₀ of the orbits [m]
     OrbitBranch branch;
     std::string failure;        ///< the case could not start
     double toMph = kLowestMph;  ///< where the continuation stops at the latest
@@ -169,7 +168,6 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 r.failure = fmt::format("no down-sweep state at {:g} mph", r.c.startMph);
                 return;
             }
-            r.distance = from->distance;
             OrbitSettings os;
             os.shooting.threads = 1;  // the cases run in parallel; the bits do not depend on it
             os.shooting.maxIterations = 20;

@@ -153,11 +153,13 @@ int main(int argc, char** argv) {
     sweepCmd->add_option("--jobs", sweep.jobs, "parallel sweeps (default: one per core)")->check(inRange(jobsRange, ""));
     sweepCmd->add_option("--max-wall-s", sweep.maxWallS, "wall-time limit of each speed's run [s]")
         ->check(inRange("limits.max_wall_time", "s"));
-    sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
+    CLI::Option* freshFlag =
+        sweepCmd->add_flag("--fresh", sweep.fresh, "start every speed from rest instead of the previous state");
     sweepCmd->add_option("--speed-ramp-s", sweep.rampS,
                          "the speed changes between points over this linear ramp; 0: an instantaneous step [s]")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 60.0));
+        ->check(CLI::Range(0.0, 60.0))
+        ->excludes(freshFlag);  // --fresh starts every speed from rest: no speed change to ramp
     sweepCmd->add_flag("--json", sweep.json, "print exactly one JSON array of run summaries on stdout");
     addCommonOptions(sweepCmd, sweep, "write sweep.csv and sweep.json into this directory");
     sweepCmd->add_flag("--resume", sweep.resume,
@@ -221,14 +223,15 @@ int main(int argc, char** argv) {
                           "the run from rest at --from-mph whose end the first shooting starts from [s]")
         ->capture_default_str()
         ->check(inRange("run.duration", "s"));
-    orbitsCmd->add_option("--start-sweep-from-mph", orbits.startSweepFromMph,
+    CLI::Option* startSweep = orbitsCmd->add_option("--start-sweep-from-mph", orbits.startSweepFromMph,
                           "start from a speed sweep from this speed to --from-mph (--step-mph steps, "
                           "--start-duration-s each) instead of a run from rest [mph]")
         ->check(inRange("run.speed", "mph"));
     orbitsCmd->add_option("--start-speed-ramp-s", orbits.startRampS,
                           "the start sweep's speed ramp between speeds; 0: an instantaneous step [s]")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 60.0));
+        ->check(CLI::Range(0.0, 60.0))
+        ->needs(startSweep);  // a start from rest has no speed change
     orbitsCmd->add_option("--accuracy", orbits.accuracy, "integrator accuracy of the one-period map")
         ->capture_default_str()
         ->check(CLI::Range(1e-12, 1e-3));

@@ -89,3 +89,15 @@ TEST(OrbitsCommand, RefusesAStartSweepFromItsOwnSpeed) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("--start-sweep-from-mph"), std::string::npos) << r.err;
 }
+
+// A ramp that nothing would use is refused, never silently dropped: the start from rest
+// has no speed change; a --fresh sweep starts every speed from rest.
+TEST(OrbitsCommand, RefusesAStartRampWithoutAStartSweep) {
+    const auto dir = makeTestTempDir();
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario + " --model eom --from-mph 12 --to-mph 11 --start-speed-ramp-s 0");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("--start-sweep-from-mph"), std::string::npos) << r.err;
+    const CliOutcome sweep = runRockroll(dir, "sweep " + kScenario + " --from-mph 12 --to-mph 13 --step-mph 1 --fresh --speed-ramp-s 0");
+    EXPECT_EQ(sweep.exitCode, 2) << sweep.err;
+    EXPECT_NE(sweep.err.find("--fresh"), std::string::npos) << sweep.err;
+}

@@ -234,6 +234,9 @@ def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0
         raise ValueError(f"accuracy = {accuracy!r}: expected a number in [1e-12, 1e-3]")
     if not 0 <= float(start_speed_ramp_s) <= 60:
         raise ValueError(f"start_speed_ramp_s = {start_speed_ramp_s!r}: expected a time in [0 s, 60 s]")
+    if start_sweep_from_mph is None and float(start_speed_ramp_s) != 1.0:
+        raise ValueError(f"start_speed_ramp_s = {start_speed_ramp_s!r} without start_sweep_from_mph: a start from rest "
+                         "has no speed change to ramp")
     command = _call("orbits", sc, from_mph=from_mph, to_mph=to_mph, model=model, amplitude_in=amplitude_in,
                     step_mph=step_mph, start_duration_s=start_duration_s,
                     start_sweep_from_mph=start_sweep_from_mph, start_speed_ramp_s=start_speed_ramp_s,

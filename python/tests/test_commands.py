@@ -60,5 +60,7 @@ def test_orbits_is_the_command_lines(cli_json):
     assert [p["speed_mph"] for p in result["points"]] == [12, 11.75]
     with pytest.raises(rockroll.ScenarioError, match="state cannot be shot"):
         rockroll.orbits(LOADED, model="reduced", from_mph=12, to_mph=11)
+    with pytest.raises(ValueError, match="start_speed_ramp_s"):
+        rockroll.orbits(LOADED, from_mph=12, to_mph=11, start_speed_ramp_s=0)
     with pytest.raises(ValueError, match="newton_steps"):
         rockroll.orbits(LOADED, from_mph=12, to_mph=11, newton_steps=0)
