@@ -8,6 +8,7 @@
 #include "scenarios/ScenarioRun.h"
 
 #include "bespoke/ReducedHalfCarModel.h"
+#include "scenarios/OrbitContinuation.h"
 #include "scenarios/PeriodicOrbit.h"
 #include "scenarios/SpeedSweep.h"
 
@@ -87,6 +88,45 @@ void orbitPoint(benchmark::State& state, const std::string& model) {
     state.counters["map_evaluations"] = o.mapEvaluations;
     state.counters["cpu_s_per_map"] = gOrbitCpuS[model] / o.mapEvaluations;
 }
+// Cost of a branch (docs/orbits.md, "Newton"): eom's upper branch continued 14 → 12 mph
+// in 0.5 mph steps (70-ton loaded, 0.75 in, one thread), every shooting from a fresh
+// monodromy against a chord Newton from the previous orbit's. Same start as orbitPoint.
+struct BranchCost {
+    double cpuS = 0;
+    long maps = 0;
+    std::vector<double> amplitudes;
+};
+std::map<bool, BranchCost> gBranch;
+void orbitBranch(benchmark::State& state, bool reuse) {
+    Scenario sc = getDefaultScenario();
+    sc.model = model_names::kEom;
+    SweepSpec spec;
+    spec.scenario = sc;
+    spec.scenario.run.duration = 20;
+    spec.fromMph = 14, spec.toMph = 16.5, spec.stepMph = 0.5;
+    spec.direction = SweepDirection::Down;
+    const RestartState start = *runSweep(spec).back().next.from;
+    OrbitSettings os;
+    os.shooting.threads = 1;
+    os.shooting.maxIterations = 20;
+    const PeriodicOrbitSolver solver(sc, start.distance, os);
+    OrbitContinuationSettings cs;
+    cs.fromMph = 14, cs.toMph = 12, cs.stepMph = 0.5;
+    cs.reuseMonodromy = reuse;
+    OrbitBranch b;
+    const std::clock_t c0 = std::clock();
+    for (auto _ : state) b = OrbitContinuation(solver, cs).trace(start.y);
+    BranchCost& c = gBranch[reuse];
+    c.cpuS = double(std::clock() - c0) / CLOCKS_PER_SEC / double(state.iterations());
+    c.maps = 0;
+    c.amplitudes.clear();
+    for (const auto& p : b.points) {
+        c.maps += p.mapEvaluations;
+        if (p.converged) c.amplitudes.push_back(p.rollAmplitudeDeg);
+    }
+    state.counters["orbits"] = double(c.amplitudes.size());
+    state.counters["map_evaluations"] = double(c.maps);
+}
 // Cost of one right-hand-side evaluation: realize a perturbed state through
 // Acceleration, with every force element enabled or with all of them disabled
 // (Simbody's own floor for the same bodies and mobilities).
@@ -145,6 +185,11 @@ int main(int argc, char** argv) {
                                      [m = std::string(model)](benchmark::State& s) { orbitPoint(s, m); })
             ->Iterations(1)
             ->Unit(benchmark::kSecond);
+    for (bool reuse : {false, true})
+        benchmark::RegisterBenchmark(reuse ? "orbitbranch/eom/chord" : "orbitbranch/eom/fresh",
+                                     [reuse](benchmark::State& s) { orbitBranch(s, reuse); })
+            ->Iterations(1)
+            ->Unit(benchmark::kSecond);
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
 
@@ -201,6 +246,15 @@ int main(int argc, char** argv) {
         fmt::print("\norbit point at 13.5 mph (CPU s): eom {:.2f}, halfcar {:.2f}; halfcar / eom {:.2f}x\n",
                    gOrbitCpuS[model_names::kEom], gOrbitCpuS[model_names::kHalfCar],
                    gOrbitCpuS[model_names::kHalfCar] / gOrbitCpuS[model_names::kEom]);
+    if (gBranch.count(false) && gBranch.count(true)) {
+        const BranchCost &f = gBranch[false], &c = gBranch[true];
+        double diff = 0;
+        for (size_t i = 0; i < std::min(f.amplitudes.size(), c.amplitudes.size()); ++i)
+            diff = std::max(diff, std::abs(c.amplitudes[i] / f.amplitudes[i] - 1));
+        fmt::print("\neom branch 14 -> 12 mph (CPU s, maps, orbits): fresh monodromy {:.1f}, {}, {}; chord Newton {:.1f}, "
+                   "{}, {}; fresh / chord {:.2f}x; roll amplitudes differ by at most {:.2g}\n",
+                   f.cpuS, f.maps, f.amplitudes.size(), c.cpuS, c.maps, c.amplitudes.size(), f.cpuS / c.cpuS, diff);
+    }
     fmt::print("\nratios (same run):\n");
     ratio("halfcar cpodes 0.0001", "fullcar cpodes 0.0001");
     ratio("halfcar cpodes 0.0001", "halfcar rkmerson 0.0001");

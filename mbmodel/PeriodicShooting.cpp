@@ -47,22 +47,36 @@ Eigen::VectorXcd PeriodicShooting::calcMultipliers(const Eigen::MatrixXd& monodr
     return Eigen::Map<const Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
 }
 
-ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
+ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess, const Eigen::MatrixXd& initialMonodromy) const {
     const Eigen::Index n = guess.size();
     if (n != steps_.size())
         throw std::invalid_argument(fmt::format("shooting: guess has {} coordinates; expected {}", n, steps_.size()));
+    const bool chord = initialMonodromy.size() != 0;
+    if (chord && (initialMonodromy.rows() != n || initialMonodromy.cols() != n))
+        throw std::invalid_argument(fmt::format("shooting: a {}x{} monodromy to start from; expected {}x{}",
+                                                initialMonodromy.rows(), initialMonodromy.cols(), n, n));
     ShootingResult out;
     out.x = guess;
     try {
         out.mapped = map_(out.x);
         ++out.mapEvaluations;
-        out.monodromy = calcMonodromy(out.x, out.mapped);
-        out.mapEvaluations += int(n);
+        if (chord) {
+            out.monodromy = initialMonodromy;
+        } else {
+            out.monodromy = calcMonodromy(out.x, out.mapped);
+            out.mapEvaluations += int(n);
+        }
     } catch (const std::exception& e) {
         out.failure = fmt::format("the map failed at the start: {}", e.what());
         out.mismatch = std::numeric_limits<double>::infinity();
         return out;
     }
+    bool stale = chord;  ///< out.monodromy is not M at out.x
+    auto refresh = [&]() {
+        out.monodromy = calcMonodromy(out.x, out.mapped);
+        out.mapEvaluations += int(n);
+        stale = false;
+    };
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
     int stalled = 0;
     for (;;) {
@@ -74,10 +88,18 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
                        out.mismatch, worst, std::abs(calcMultipliers(out.monodromy)[0]));
         }
         if (out.mismatch < settings_.tolerance) {
+            if (stale) {
+                try {
+                    refresh();  // the orbit's own multipliers
+                } catch (const std::exception& e) {
+                    out.failure = fmt::format("the map failed in the monodromy at the orbit: {}", e.what());
+                    break;
+                }
+            }
             out.converged = true;
             break;
         }
-        if (out.iterations >= settings_.maxIterations) {
+        if (out.iterations - out.chordSteps >= settings_.maxIterations) {
             out.failure = fmt::format("no convergence in {} Newton steps (mismatch {:.3g} perturbation steps)",
                                       settings_.maxIterations, out.mismatch);
             break;
@@ -85,6 +107,33 @@ ShootingResult PeriodicShooting::solve(const Eigen::VectorXd& guess) const {
         Eigen::VectorXd delta = (out.monodromy - I).completeOrthogonalDecomposition().solve(out.x - out.mapped);
         const double size = delta.cwiseQuotient(steps_).cwiseAbs().maxCoeff();
         if (size > settings_.maxStep) delta *= settings_.maxStep / size;
+        if (stale) {
+            // Chord step: the full step only. Kept while it contracts fast enough; otherwise a fresh M
+            // at the better of the two iterates, and the search goes on with full Newton steps.
+            const Eigen::VectorXd trial = out.x + delta;
+            try {
+                Eigen::VectorXd trialMapped = map_(trial);
+                ++out.mapEvaluations;
+                const double m = calcMismatch(trial, trialMapped);
+                if (m < out.mismatch) {
+                    out.x = trial;
+                    out.mapped = std::move(trialMapped);
+                    ++out.iterations;
+                    ++out.chordSteps;
+                    if (m <= settings_.chordContraction * out.mismatch) continue;
+                }
+            } catch (const std::exception&) {
+                // the fresh M below decides
+            }
+            try {
+                refresh();
+            } catch (const std::exception& e) {
+                out.failure = fmt::format("the map failed in the monodromy after Newton step {}: {}", out.iterations,
+                                          e.what());
+                break;
+            }
+            continue;
+        }
         // Backtracking: the full step first, then halved while the mismatch does not fall; when no
         // try falls, the try with the smallest mismatch, unless it grew past 10× the current one.
         Eigen::VectorXd next, nextMapped;

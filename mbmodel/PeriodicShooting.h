@@ -21,6 +21,13 @@
 // on every try, or two Newton steps running that lower nothing. The Floquet multipliers
 // are the eigenvalues of M at the last iterate (a sticking wedge contributes one
 // μ = 1 with finite-difference noise).
+//
+// A given monodromy (a neighbouring orbit's, in a continuation) starts a chord
+// Newton: its steps reuse that M, one map each instead of n + 1, for as long as each
+// full step cuts the mismatch to at most `chordContraction` of what it was. A chord
+// step that does not is replaced by a fresh M at the current iterate, and the
+// search goes on as above. An orbit found with a reused M gets a fresh M at it, so
+// its multipliers are always the orbit's own (PeriodicShooting.ChordNewton*).
 #include <Eigen/Dense>
 #include <functional>
 #include <string>
@@ -28,11 +35,13 @@
 namespace rockroll {
 
 struct ShootingSettings {
-    int maxIterations = 8;
+    int maxIterations = 8;   ///< Newton steps with a fresh M (chord steps come on top: each halves the mismatch)
     double tolerance = 5;    ///< converged when max_i |F_i| / h_i is below this
     double maxStep = 1e5;    ///< largest Newton step, in perturbation steps
     int lineSearchHalvings = 4;  ///< halvings of a Newton step whose mismatch does not fall
     int threads = 0;         ///< parallelFor's limit for the monodromy's columns (0: the pool's)
+    /// A chord step (reused M) is kept when it cuts the mismatch to at most this fraction.
+    double chordContraction = 0.5;
 };
 
 struct ShootingResult {
@@ -40,8 +49,9 @@ struct ShootingResult {
     Eigen::VectorXd x;          ///< the last iterate
     Eigen::VectorXd mapped;     ///< P(x)
     double mismatch = 0;        ///< max_i |P(x)_i − x_i| / h_i
-    int iterations = 0;         ///< Newton steps taken
+    int iterations = 0;         ///< Newton steps taken (chord steps included)
     int mapEvaluations = 0;
+    int chordSteps = 0;         ///< Newton steps taken with a reused M
     Eigen::MatrixXd monodromy;  ///< M at x
     Eigen::VectorXcd multipliers;  ///< eigenvalues of M, by decreasing modulus
     std::string failure;        ///< why it did not converge (empty when it did)
@@ -56,7 +66,8 @@ public:
     /// max_i |F_i| / s_i (empty: the steps).
     PeriodicShooting(Map map, Eigen::VectorXd steps, ShootingSettings settings = {}, Eigen::VectorXd scales = {});
 
-    ShootingResult solve(const Eigen::VectorXd& guess) const;
+    /// initialMonodromy: M to start a chord Newton with (n × n; empty: a fresh M at the guess).
+    ShootingResult solve(const Eigen::VectorXd& guess, const Eigen::MatrixXd& initialMonodromy = {}) const;
     /// M at x, given P(x).
     Eigen::MatrixXd calcMonodromy(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const;
     double calcMismatch(const Eigen::VectorXd& x, const Eigen::VectorXd& mapped) const;

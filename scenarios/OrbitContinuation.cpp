@@ -55,7 +55,8 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
             const double f = (next - cur.speedMph) / (cur.speedMph - prev->speedMph);
             for (size_t i = 0; i < guess.size(); ++i) guess[i] = cur.y[i] + f * (cur.y[i] - prev->y[i]);
         }
-        PeriodicOrbit o = solver_.solve(next, guess);
+        const bool reuse = settings_.reuseMonodromy && cur.period == 1;
+        PeriodicOrbit o = solver_.solve(next, guess, reuse ? cur.monodromy : Eigen::MatrixXd());
         bool accepted = o.converged;
         if (accepted) {
             const double jump = std::abs(o.rollAmplitudeDeg - cur.rollAmplitudeDeg);

@@ -17,6 +17,10 @@
 // multiplier crossing −1 (period doubling), a complex pair leaving the unit circle
 // (Neimark–Sacker), and a real multiplier crossing +1, each as the speed bracket
 // where it happens (moduli compared with OrbitSettings::stabilityMargin).
+//
+// With `reuseMonodromy`, the shooting at V_{k+1} starts a chord Newton from the
+// monodromy of the period-1 orbit at V_k (PeriodicShooting.h); each orbit's own
+// multipliers are still computed at it.
 #include "scenarios/PeriodicOrbit.h"
 
 #include <functional>
@@ -31,6 +35,7 @@ struct OrbitContinuationSettings {
     int refinements = 2;          ///< halvings of the step at a failure before the branch ends
     double jumpFraction = 0.3;    ///< |Δ roll amplitude| / roll amplitude above which an orbit is another branch's
     double foldMultiplier = 0.8;  ///< the end is a fold when the last orbit's largest real multiplier is in (this, 2 − this)
+    bool reuseMonodromy = true;   ///< start each shooting from the last period-1 orbit's monodromy (chord Newton)
 };
 
 struct OrbitEvent {

@@ -104,7 +104,8 @@ Eigen::VectorXd PeriodicOrbitSolver::toShooting(const std::vector<double>& y) co
     return x;
 }
 
-PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<double>& guess) const {
+PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<double>& guess,
+                                         const Eigen::MatrixXd& startMonodromy) const {
     const auto wall0 = std::chrono::steady_clock::now();
     PeriodicOrbit o;
     o.speedMph = speedMph;
@@ -114,7 +115,7 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
         };
     };
     const Eigen::VectorXd x0 = toShooting(guess);
-    ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting, scales_).solve(x0);
+    ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting, scales_).solve(x0, startMonodromy);
     o.mapEvaluations = r.mapEvaluations;
     int period = 1;
     if (!r.converged && settings_.tryPeriodTwo) {
@@ -131,6 +132,7 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
     o.mismatch = r.mismatch;
     o.iterations = r.iterations;
     o.multipliers = r.multipliers;
+    if (r.converged) o.monodromy = r.monodromy;
     o.failure = r.failure;
     o.converged = r.converged;
     if (o.converged) {

@@ -52,6 +52,7 @@ struct PeriodicOrbit {
     double periodOneMismatch = 0;     ///< the same for P alone (period 2: large)
     int iterations = 0, mapEvaluations = 0;
     Eigen::VectorXcd multipliers;     ///< of P^period at the orbit, by decreasing modulus
+    Eigen::MatrixXd monodromy;        ///< ∂(P^period)/∂x at the orbit (converged only)
     double maxMultiplier = 0;         ///< |μ|max
     double largestRealMultiplier = 0; ///< the largest real part of a real multiplier (fold: → +1)
     double smallestRealMultiplier = 0;///< the smallest real multiplier (period doubling: → −1)
@@ -79,8 +80,10 @@ public:
     const Scenario& getScenario() const { return base_; }
     const OrbitSettings& getSettings() const { return settings_; }
 
-    /// Shoots from the model's flat state `guess` at speedMph.
-    PeriodicOrbit solve(double speedMph, const std::vector<double>& guess) const;
+    /// Shoots from the model's flat state `guess` at speedMph. startMonodromy: a neighbouring
+    /// period-1 orbit's ∂P/∂x, to start a chord Newton on P with (PeriodicShooting.h; empty: none).
+    PeriodicOrbit solve(double speedMph, const std::vector<double>& guess,
+                        const Eigen::MatrixXd& startMonodromy = {}) const;
     /// The model's run over `periods` forcing periods from y at s₀ (NumericalFailure
     /// when it fails, or a run limit stops it).
     ScenarioRun runPeriods(double speedMph, const std::vector<double>& y, int periods) const;
