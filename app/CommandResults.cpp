@@ -174,6 +174,10 @@ nlohmann::ordered_json makeSweepJumpsJson(const std::vector<SweepSpec>& specs,
         j["direction"] = specs[i].direction == SweepDirection::Up ? "up" : "down";
         j["jump_speed_mph"] = std::isfinite(jump.speedMph) ? nlohmann::ordered_json(jump.speedMph) : nullptr;
         j["steady_roll_change_deg"] = jump.changeDeg;
+        j["steady_roll_change_fraction"] = std::isfinite(jump.changeFraction) ? nlohmann::ordered_json(jump.changeFraction)
+                                                                               : nullptr;
+        j["largest_change_mph"] = std::isfinite(jump.largestChangeMph) ? nlohmann::ordered_json(jump.largestChangeMph)
+                                                                        : nullptr;
         jumps.push_back(std::move(j));
     }
     return jumps;

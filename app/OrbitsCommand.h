@@ -23,6 +23,7 @@ struct OrbitsOptions : CommonOptions {
     double accuracy = 1e-7;      ///< integrator accuracy of the map
     int refinements = 2;         ///< step halvings at a failure before the branch ends
     int newtonSteps = 20;        ///< Newton steps per shooting (on P, then on P∘P)
+    double fdStepScale = 1;      ///< scales the monodromy's finite-difference steps (the tolerance is unchanged)
     int jobs = 0;                ///< threads for the monodromy's columns (0: one per core)
     bool json = false;
 };

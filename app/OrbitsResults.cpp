@@ -82,6 +82,7 @@ OrbitSettings checkOrbitsInput(const Scenario& sc0, const OrbitsOptions& o) {
     settings.accuracy = o.accuracy;
     settings.shooting.threads = o.jobs;
     settings.shooting.maxIterations = o.newtonSteps;
+    settings.stepScale = o.fdStepScale;
     { const PeriodicOrbitSolver check(sc0, 0.0, settings); }  // ScenarioError: a model whose state cannot be shot
     return settings;
 }
@@ -170,8 +171,10 @@ OrbitsResult calcOrbits(const Scenario& sc0, const OrbitsOptions& o, const std::
     j["car"] = sc0.car.name;
     j["amplitude_in"] = sc0.track.measured.empty() ? json(sc0.track.amplitude / units::inch) : json(nullptr);
     j["method"] = "shooting on the one-period map P(y) = phi_T(y), T = L/V, Newton with a finite-difference "
-                  "monodromy; natural-parameter continuation in speed with a secant predictor (docs/orbits.md)";
+                  "monodromy (a chord Newton from the previous orbit's along the branch); natural-parameter continuation in "
+                  "speed with a secant predictor (docs/orbits.md)";
     j["accuracy"] = o.accuracy;
+    j["fd_step_scale"] = o.fdStepScale;
     j["start"] = {{"speed_mph", o.fromMph},
                   {"kind", startKind},
                   {"sweep_from_mph", o.startSweepFromMph ? json(*o.startSweepFromMph) : json(nullptr)},

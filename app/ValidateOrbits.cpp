@@ -25,9 +25,13 @@ constexpr double kStepRunS = 30;
 constexpr double kOnBranchFraction = 0.3;
 
 struct OrbitCase {
+    std::string car;
     double amplitudeIn;
     std::string model;
     double startMph, stepMph;
+    double toMph = kLowestMph;  ///< where the continuation stops at the latest
+    /// "70ton-loaded_0.75in": section 2's case key (the sweep, its plots and the orbits' CSV).
+    std::string getKey() const { return fmt::format("{}_{:.2f}in", car, amplitudeIn); }
 };
 
 struct OrbitCaseResult {
@@ -35,9 +39,8 @@ struct OrbitCaseResult {
     std::string start;          ///< where the start state came from
     OrbitBranch branch;
     std::string failure;        ///< the case could not start
-    double toMph = kLowestMph;  ///< where the continuation stops at the latest
     bool swept = false;         ///< section 2 swept this model and amplitude
-    double sweepDropMph = NAN;  ///< section 2's down sweep (ramped), NaN: it never drops by kOnBranchFraction
+    double sweepDropMph = NAN;  ///< section 2's down sweep's (ramped) jump, NaN: none (kJumpFraction)
     double sweepLargestFallDeg = 0, sweepLargestFallMph = NAN;  ///< its largest fall between neighbouring speeds
     /// Per orbit speed (eom): the smallest instantaneous speed step down, of kBasinSteps,
     /// after which the run ends off the branch; NaN: none of them; −1: no step tried (no
@@ -77,7 +80,7 @@ std::string describeEnd(const OrbitCaseResult& r) {
         return fmt::format("branch end between {:.2f} and {:.2f} mph (not a fold: {})", b.endBracketMph->second,
                            b.endBracketMph->first, b.stopReason);
     if (b.stopReason == "no orbit at the start speed") return "no orbit at the start speed: " + b.points.front().failure;
-    return fmt::format("no fold down to {:g} mph", r.toMph);
+    return fmt::format("no fold down to {:g} mph", r.c.toMph);
 }
 
 std::string describeBasin(double dv) {
@@ -99,21 +102,13 @@ std::string describeOrbitStability(const OrbitBranch& b) {
     return fmt::format("{}", fmt::join(parts, "; "));
 }
 
-/// The speed after a down sweep's largest fall of the steady roll amplitude between
-/// neighbouring speeds when that fall is more than kOnBranchFraction of the amplitude
-/// before it; NaN otherwise (a smaller fall stays on the branch).
-double findDrop(const std::vector<SweepPoint>& down) {
-    const SweepJump j = findSweepJump(down, SweepDirection::Down);
-    for (size_t k = 1; k < down.size(); ++k)
-        if (down[k].speedMph == j.speedMph && !down[k - 1].failed &&
-            j.changeDeg > kOnBranchFraction * down[k - 1].summary.steadyRollAmplitudeDeg)
-            return j.speedMph;
-    return NAN;
-}
+/// A down sweep's drop: its jump (scenarios/SpeedSweep.h, kJumpFraction); NaN: none.
+double findDrop(const std::vector<SweepPoint>& down) { return findSweepJump(down, SweepDirection::Down).speedMph; }
 
-const SweepResult* findSweep(const std::vector<SweepResult>& sweeps, const std::string& model, double amp) {
+const SweepResult* findSweep(const std::vector<SweepResult>& sweeps, const std::string& car, const std::string& model,
+                             double amp) {
     for (const auto& r : sweeps)
-        if (r.c.car == "70ton-loaded" && r.model == model && std::abs(r.c.amplitudeIn - amp) < 1e-9) return &r;
+        if (r.c.car == car && r.model == model && std::abs(r.c.amplitudeIn - amp) < 1e-9) return &r;
     return nullptr;
 }
 }  // namespace
@@ -124,32 +119,36 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
     // Start speeds: on the down sweeps' upper branch at every amplitude (section 2).
     std::vector<OrbitCase> cases;
     if (s.quick) {
-        cases.push_back({0.75, model_names::kEom, 14, 0.5});
+        cases.push_back({"70ton-loaded", 0.75, model_names::kEom, 14, 0.5, 13});
     } else {
         for (const auto& [amp, v0] : std::vector<std::pair<double, double>>{{0.5, 16}, {0.75, 14}, {1.0, 14}}) {
-            cases.push_back({amp, model_names::kEom, v0, 0.5});
-            cases.push_back({amp, model_names::kHalfCar, v0, 1.0});
+            cases.push_back({"70ton-loaded", amp, model_names::kEom, v0, 0.5});
+            cases.push_back({"70ton-loaded", amp, model_names::kHalfCar, v0, 1.0});
         }
+        // The empty car's drop (section 2: 26 → 25.5 mph), its branch down to the lowest speed swept.
+        cases.push_back({"70ton-empty", 0.75, model_names::kEom, 27, 0.5, 24});
+        cases.push_back({"70ton-empty", 0.75, model_names::kHalfCar, 27, 1.0, 24});
     }
-    const Scenario car = loadCar("70ton-loaded");
+    std::map<std::string, Scenario> cars;
+    for (const auto& c : cases)
+        if (!cars.count(c.car)) cars.emplace(c.car, loadCar(c.car));
+    const Scenario& car = cars.at("70ton-loaded");
     std::vector<OrbitCaseResult> results(cases.size());
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < cases.size(); ++i)
         jobs.push_back([&, i] {
             OrbitCaseResult& r = results[i];
             r.c = cases[i];
-            Scenario sc = car;
+            Scenario sc = cars.at(r.c.car);
             sc.model = r.c.model;
             sc.track.amplitude = r.c.amplitudeIn * units::inch;
             std::optional<RestartState> from;
-            const SweepResult* sw = findSweep(sweeps, r.c.model, r.c.amplitudeIn);
+            const SweepResult* sw = findSweep(sweeps, r.c.car, r.c.model, r.c.amplitudeIn);
             if (sw) {
-                // A drop is a fall between neighbouring speeds of more than kOnBranchFraction of the
-                // amplitude before it (a smaller fall stays on the branch).
                 r.swept = true;
                 const SweepJump j = findSweepJump(sw->down, SweepDirection::Down);
-                r.sweepLargestFallDeg = j.changeDeg, r.sweepLargestFallMph = j.speedMph;
-                r.sweepDropMph = findDrop(sw->down);
+                r.sweepLargestFallDeg = j.changeDeg, r.sweepLargestFallMph = j.largestChangeMph;
+                r.sweepDropMph = j.speedMph;
                 for (const auto& p : sw->down)
                     if (std::abs(p.speedMph - r.c.startMph) < 1e-9 && !p.failed && p.next.from) from = p.next.from;
                 r.start = fmt::format("section 2's down sweep at {:g} mph", r.c.startMph);
@@ -174,7 +173,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             const PeriodicOrbitSolver solver(sc, from->distance, os);
             OrbitContinuationSettings cs;
             cs.fromMph = r.c.startMph;
-            cs.toMph = r.toMph = s.quick ? 13 : kLowestMph;
+            cs.toMph = r.c.toMph;
             cs.stepMph = r.c.stepMph;
             cs.refinements = r.c.model == model_names::kEom ? 2 : 1;
             r.branch = OrbitContinuation(solver, cs).trace(from->y);
@@ -237,7 +236,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
 
     // Data: one CSV per case, one row per orbit point computed.
     for (const auto& r : results) {
-        const std::string file = fmt::format("orbits_70ton-loaded_{:.2f}in_{}.csv", r.c.amplitudeIn, r.c.model);
+        const std::string file = fmt::format("orbits_{}_{}.csv", r.c.getKey(), r.c.model);
         writeAtomically(s.out / file, [&](std::ostream& o) {
             CsvWriter csv(o, {"speed_mph", "converged", "period", "roll_amplitude_deg", "wheel_lift_fraction",
                               "max_multiplier", "largest_real_multiplier", "smallest_real_multiplier", "stable"});
@@ -250,27 +249,53 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 else
                     csv.writeRow({CsvCell::fixed(p.speedMph, 4), 0, 0, "", "", "", "", "", ""});
         });
-        meta["orbits"].push_back({{"amplitude_in", r.c.amplitudeIn}, {"model", r.c.model}, {"file", file},
+        meta["orbits"].push_back({{"car", r.c.car}, {"amplitude_in", r.c.amplitudeIn}, {"key", r.c.getKey()},
+                                  {"model", r.c.model}, {"file", file},
                                   {"end", describeEnd(r)}, {"stop_reason", r.branch.stopReason}});
     }
 
     md += fmt::format(
-        "Made like `rockroll orbits scenarios/70ton-loaded.toml --model M --amplitude-in A --from-mph V0 --to-mph {:g} "
+        "Made like `rockroll orbits scenarios/<car>.toml --model M --amplitude-in A --from-mph V0 --to-mph V1 "
         "--step-mph S` (docs/orbits.md), except that the first shooting starts from {}. Shooting on the one-period map "
-        "at accuracy 1e-7, up to 20 Newton steps (on P, then on P∘P), step halved {} at a failure (eom; the half car "
-        "once); stable when |μ|max ≤ 1.01 (a sticking wedge's neutral multiplier). A branch ends at a fold when its last "
-        "orbit's largest real multiplier is near +1 or a real multiplier crossed +1 between its last two orbits. Data "
-        "`orbits_70ton-loaded_<A>in_<model>.csv`; the orbits are drawn on the describing-function plots of section 5 "
-        "(`steady_70ton-loaded_<A>in.png`). The down sweep's drop (section 2: 0.5 mph steps, 30 s a speed, the speed "
-        "ramped over 1 s) is its largest fall of the steady roll amplitude between neighbouring speeds, counted as "
-        "a drop when it is more than 30 % of the amplitude before it.\n\n",
-        s.quick ? 13.0 : kLowestMph,
+        "at accuracy 1e-7, up to 20 Newton steps (on P, then on P∘P), each shooting after the first a chord Newton from "
+        "the previous orbit's monodromy, step halved twice at a failure (eom; the half car once); stable when |μ|max ≤ "
+        "1.01 (a sticking wedge's neutral multiplier). A branch ends at a fold when its last orbit's largest real "
+        "multiplier is near +1 or a real multiplier crossed +1 between its last two orbits. Data "
+        "`orbits_<car>_<A>in_<model>.csv`; the 70-ton loaded car's orbits are drawn on the describing-function plots of "
+        "section 5 (`steady_70ton-loaded_<A>in.png`). The down sweep's drop (section 2: 0.5 mph steps, 30 s a speed, the "
+        "speed ramped over 1 s) is its jump: its largest fall of the steady roll amplitude between neighbouring speeds "
+        "when that is more than {:g} % of the amplitude before it.\n\n",
         s.quick ? "a short down sweep of eom's own (the quick run sweeps only the reduced model)"
                 : "the state section 2's down sweep reached at V0 (accuracy 1e-4)",
-        "twice");
-    md += "| A, in | model | V0, mph | S, mph | orbits converged | speeds covered, mph | roll amplitude, deg | stability, mph "
-          "| where the branch ends | multiplier events | down sweep drops at (section 2) | the drop beside the branch |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        100 * kJumpFraction);
+    md += "| car | A, in | model | V0 → V1, mph | S, mph | orbits converged | speeds covered, mph | roll amplitude, deg | "
+          "stability, mph | where the branch ends | multiplier events | down sweep drops at (section 2) | the drop beside "
+          "the branch |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    // A sweep's drop beside a branch: the drop lies between its speed before (drop + step)
+    // and the drop speed (findSweepJump: the lower speed of the pair).
+    auto describeDropBeside = [&](double dropMph, const OrbitCaseResult& r) {
+        const auto v = convergedOrbits(r.branch);
+        if (v.empty()) return std::string("no orbit to compare");
+        const bool folded = r.branch.stopReason.rfind("fold", 0) == 0 && r.branch.endBracketMph;
+        const double before = dropMph + s.sweepStep;
+        const bool ends = r.branch.endBracketMph.has_value();
+        const bool atEnd = ends && dropMph <= r.branch.endBracketMph->first + 1e-9;
+        std::string verdict = fmt::format("the sweep falls off between {:g} and {:g} mph; ", before, dropMph);
+        verdict += ends ? fmt::format("the branch {} between {:.2f} and {:.2f} mph", folded ? "folds" : "ends",
+                                      r.branch.endBracketMph->second, r.branch.endBracketMph->first)
+                        : fmt::format("the branch has orbits down to {:.2f} mph", v.back()->speedMph);
+        verdict += atEnd ? ": the drop is at or just below the branch's end" : ": the sweep leaves the branch above its end";
+        // Where it leaves above the end: the basin there (measured on eom only).
+        if (!atEnd)
+            for (const auto& e : results)
+                if (e.c.model == model_names::kEom && e.c.getKey() == r.c.getKey())
+                    for (const auto& [sp, dv] : e.basin)
+                        if (std::abs(sp - before) < 1e-9)
+                            verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed "
+                                                   "step down that leaves the branch: {}",
+                                                   sp, describeBasin(dv));
+        return verdict;
+    };
     std::string foldSentence;
     for (const auto& r : results) {
         const auto v = convergedOrbits(r.branch);
@@ -283,27 +308,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         if (v.empty()) {
             verdict = "no orbit to compare";
         } else if (std::isfinite(r.sweepDropMph)) {
-            // The drop is between the speed before it and its own (findSweepJump: the lower speed of the pair).
-            const double lowestOrbit = v.back()->speedMph;
-            // The sweep's drop lies between its speed before (drop + step) and the drop speed.
-            const double before = r.sweepDropMph + s.sweepStep;
-            const bool ends = r.branch.endBracketMph.has_value();
-            const bool atEnd = ends && r.sweepDropMph <= r.branch.endBracketMph->first + 1e-9;
-            verdict = fmt::format("the sweep falls off between {:g} and {:g} mph; ", before, r.sweepDropMph);
-            verdict += ends ? fmt::format("the branch {} between {:.2f} and {:.2f} mph", folded ? "folds" : "ends",
-                                          r.branch.endBracketMph->second, r.branch.endBracketMph->first)
-                            : fmt::format("the branch has orbits down to {:.2f} mph", lowestOrbit);
-            verdict += atEnd ? ": the drop is at or just below the branch's end"
-                             : ": the sweep leaves the branch above its end";
-            // Where it leaves above the end: the basin there (measured on eom only).
-            if (!atEnd)
-                for (const auto& e : results)
-                    if (e.c.model == model_names::kEom && e.c.amplitudeIn == r.c.amplitudeIn)
-                        for (const auto& [sp, dv] : e.basin)
-                            if (std::abs(sp - before) < 1e-9)
-                                verdict += fmt::format("; from eom's orbit at {:g} mph the smallest instantaneous speed "
-                                                       "step down that leaves the branch: {}",
-                                                       sp, describeBasin(dv));
+            verdict = describeDropBeside(r.sweepDropMph, r);
         } else if (!r.swept) {
             verdict = "not swept in this run";
         } else {
@@ -311,8 +316,9 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                                            r.branch.endBracketMph->second, r.branch.endBracketMph->first)
                              : "the sweep never drops and the branch does not end: consistent";
         }
-        md += fmt::format("| {:.2f} | {} | {:g} | {:g} | {} of {} | {} | {} | {} | {} | {} | {} | {} |\n", r.c.amplitudeIn,
-                          r.c.model, r.c.startMph, r.c.stepMph, v.size(), r.branch.points.size(),
+        md += fmt::format("| {} | {:.2f} | {} | {:g} → {:g} | {:g} | {} of {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                          r.c.car, r.c.amplitudeIn, r.c.model, r.c.startMph, r.c.toMph, r.c.stepMph, v.size(),
+                          r.branch.points.size(),
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.back()->speedMph, v.front()->speedMph),
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.front()->rollAmplitudeDeg, v.back()->rollAmplitudeDeg),
                           describeOrbitStability(r.branch), describeEnd(r),
@@ -326,15 +332,57 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                           verdict);
     }
 
+    // Every drop of section 2, beside the branch it leaves: the model's own when computed here,
+    // else its twin's (eom), else why there is none.
+    if (!s.quick) {
+        md += "\n**Every drop of section 2 beside the branch it leaves** (its down sweep's jump; the branch is the same "
+              "model's when computed above, otherwise eom's on the same case, which solves the same car's equations "
+              "to within 1 % of the half car):\n\n| car | A, in | model | drops at, mph | the branch beside it | "
+              "the drop beside the branch |\n|---|---|---|---|---|---|\n";
+        for (const auto& sw : sweeps) {
+            const double drop = findDrop(sw.down);
+            if (!std::isfinite(drop)) continue;
+            const std::string key = fmt::format("{}_{:.2f}in", sw.c.car, sw.c.amplitudeIn);
+            const OrbitCaseResult *own = nullptr, *twin = nullptr;
+            for (const auto& r : results) {
+                if (r.c.getKey() != key) continue;
+                if (r.c.model == sw.model) own = &r;
+                else if (r.c.model == model_names::kEom) twin = &r;
+            }
+            const OrbitCaseResult* b = own ? own : twin;
+            std::string beside, verdict;
+            if (b) {
+                beside = fmt::format("{} ({})", b->c.model, describeEnd(*b));
+                verdict = describeDropBeside(drop, *b);
+            } else if (sw.model == model_names::kReduced) {
+                beside = "none: the reduced model's state holds its truck's discrete mode and is not shot "
+                         "(docs/orbits.md); no eom branch on this case";
+                verdict = "not explained here";
+            } else {
+                beside = "none computed on this case";
+                verdict = "not explained here";
+            }
+            if (b && b != own)
+                beside += sw.model == model_names::kReduced
+                              ? "; the reduced model's own state holds a discrete truck mode and is not shot, so this "
+                                "is the detailed equations' branch, not the reduced model's"
+                              : fmt::format("; {}'s own orbits are not computed in validate (docs/orbits.md)", sw.model);
+            md += fmt::format("| {} | {:.2f} | {} | {:.1f} | {} | {} |\n", sw.c.car, sw.c.amplitudeIn, sw.model, drop,
+                              beside, verdict);
+        }
+    }
+
     // eom against the half car: the fold (or the lowest orbit) of each.
     md += "\n**eom against the Simbody half car** (its twin): ";
     std::vector<std::string> twins;
-    for (double amp : {0.5, 0.75, 1.0}) {
-        const OrbitCaseResult *e = nullptr, *h = nullptr;
+    for (const auto& e0 : results) {
+        if (e0.c.model != model_names::kEom) continue;
+        const OrbitCaseResult *e = &e0, *h = nullptr;
         for (const auto& r : results)
-            if (std::abs(r.c.amplitudeIn - amp) < 1e-9) (r.c.model == model_names::kEom ? e : h) = &r;
-        if (!e || !h) continue;
-        twins.push_back(fmt::format("{:.2f} in: eom {}, half car {}", amp, describeEnd(*e), describeEnd(*h)));
+            if (r.c.getKey() == e->c.getKey() && r.c.model == model_names::kHalfCar) h = &r;
+        if (!h) continue;
+        twins.push_back(fmt::format("{} {:.2f} in: eom {}, half car {}", e->c.car, e->c.amplitudeIn, describeEnd(*e),
+                                    describeEnd(*h)));
         // Roll amplitude at the speeds both have.
         double worst = 0;
         for (const PeriodicOrbit* p : convergedOrbits(h->branch)) {
@@ -350,14 +398,15 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                       "steps down at once by Δ = {} mph and the run goes on {:g} s; it counts as off the branch when its "
                       "steady roll amplitude differs from the branch's orbit at the new speed by more than {:g} %. The "
                       "cell gives the smallest such Δ (\"none\": it stays on the branch for every Δ tried, \"—\": no orbit "
-                      "at the new speed to compare with).\n\n| A, in | speed mph: smallest Δ that drops |\n|---|---|\n",
+                      "at the new speed to compare with).\n\n| car | A, in | speed mph: smallest Δ that drops |\n|---|---|---|\n",
                       fmt::join(kBasinSteps, ", "), kStepRunS, 100 * kOnBranchFraction);
     for (const auto& r : results) {
         if (r.c.model != model_names::kEom) continue;
         std::vector<std::string> cells;
         for (const auto& [v, dv] : r.basin)
             cells.push_back(fmt::format("{:g}: {}", v, describeBasin(dv)));
-        md += fmt::format("| {:.2f} | {} |\n", r.c.amplitudeIn, cells.empty() ? "—" : fmt::format("{}", fmt::join(cells, "; ")));
+        md += fmt::format("| {} | {:.2f} | {} |\n", r.c.car, r.c.amplitudeIn,
+                          cells.empty() ? "—" : fmt::format("{}", fmt::join(cells, "; ")));
     }
 
     // Stepped sweeps.
@@ -370,7 +419,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                           kStepRunS);
         for (const char* m : {model_names::kEom, model_names::kHalfCar})
             for (double amp : {0.75, 1.0}) {
-                const SweepResult* sw = findSweep(sweeps, m, amp);
+                const SweepResult* sw = findSweep(sweeps, "70ton-loaded", m, amp);
                 const Stepped *half = nullptr, *one = nullptr;
                 for (const auto& st : stepped)
                     if (st.model == m && st.amp == amp) (st.stepMph == 0.5 ? half : one) = &st;
@@ -393,7 +442,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
               "difference | its twin, deg | truncation (DF − twin) / twin |\n|---|---|---|---|---|---|---|\n";
         int rows = 0;
         for (const auto& r : results) {
-            if (r.c.model != model_names::kEom || !steady.count(r.c.amplitudeIn)) continue;
+            if (r.c.model != model_names::kEom || r.c.car != "70ton-loaded" || !steady.count(r.c.amplitudeIn)) continue;
             const SteadyStateSet& set = steady.at(r.c.amplitudeIn);
             for (const PeriodicOrbit* p : convergedOrbits(r.branch)) {
                 if (std::abs(p->speedMph - std::round(p->speedMph)) > 1e-9) continue;
@@ -425,7 +474,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
 
     // The report's 13.5 mph drop (Figure 11, 1.0 in), from the numbers above.
     for (const auto& r : results)
-        if (std::abs(r.c.amplitudeIn - 1.0) < 1e-9 && r.c.model == model_names::kEom) {
+        if (r.c.car == "70ton-loaded" && std::abs(r.c.amplitudeIn - 1.0) < 1e-9 && r.c.model == model_names::kEom) {
             const auto v = convergedOrbits(r.branch);
             double stableBelow = NAN;
             for (const PeriodicOrbit* p : v) {

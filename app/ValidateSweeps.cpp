@@ -136,9 +136,14 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
         "the previous one; the speed ramps over 1 s so the rails never jump. Data `sweep_<car>_<A>in_<model>.csv`, "
         "plots `sweep_<car>_<A>in.png` (roll) and `sweep_loads_<car>_<A>in.png` (wheel lift and loads).\n\n",
         s.sweepStep, s.sweepDuration, describeSweptModels(s));
-    md += "Steady roll amplitude: half the peak-to-peak roll over each point's last 3 forcing periods. The largest "
-          "amplitude of a sweep is given with its speed; a down sweep that never drops and is largest at its lowest "
-          "speed has no maximum in the range swept: it stays on the upper branch to the lowest speed swept.\n\n";
+    md += fmt::format(
+        "Steady roll amplitude: half the peak-to-peak roll over each point's last 3 forcing periods. A jump is the "
+        "largest rise (up sweep) or fall (down sweep) of the steady roll amplitude between neighbouring speeds when it "
+        "is more than {:g} % of the amplitude before it (\"none\": no change that large; section 11 sets each drop beside "
+        "the branch it leaves). The largest amplitude of a sweep is given with its speed; a down sweep that never drops "
+        "and is largest at its lowest speed has no maximum in the range swept: it stays on the upper branch to the "
+        "lowest speed swept.\n\n",
+        100 * kJumpFraction);
     md += "| car | A, in | model | jump up, mph (up sweep) | jump down, mph (down sweep) | hysteresis band, mph | "
           "largest steady roll, up sweep | largest steady roll, down sweep |\n"
           "|---|---|---|---|---|---|---|---|\n";
@@ -179,8 +184,7 @@ std::string makeSweepSection(const Settings& s, const std::vector<SweepResult>& 
     // (mit1976.toml [[sweeps]]). Figure 11 plots the maximum roll of each run, so the
     // largest max roll of the swept runs is given beside the jump speeds.
     md += "\nEach swept case beside what the report's §3.2 says of the figure that holds it. \"Here\" gives each "
-          "model's jump speeds (where the steady roll amplitude rises most between neighbouring speeds, up, or falls "
-          "most, down; the band between them is the hysteresis) and, for each sweep on its own, the largest max roll "
+          "model's jump speeds (as in the table above; the band between them is the hysteresis) and, for each sweep on its own, the largest max roll "
           "of its runs, the statistic Figure 11 plots (a point's whole run, its speed ramp and any jump transient "
           "included).\n\n";
     for (const auto& c : kSweepCases) {

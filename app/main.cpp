@@ -241,6 +241,10 @@ int main(int argc, char** argv) {
     orbitsCmd->add_option("--newton-steps", orbits.newtonSteps, "Newton steps per shooting, on P and then on P∘P")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
+    orbitsCmd->add_option("--fd-step-scale", orbits.fdStepScale,
+                          "scales the monodromy's finite-difference steps; the convergence tolerance stays")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 100.0));
     orbitsCmd->add_option("--jobs", orbits.jobs, "threads for the monodromy's columns (default: one per core)")
         ->check(inRange(jobsRange, ""));
     orbitsCmd->add_flag("--json", orbits.json, "print exactly one JSON object on stdout");

@@ -305,7 +305,8 @@ PYBIND11_MODULE(_rockroll, m) {
         "_orbits",
         [](Scenario sc, std::optional<std::string> model, std::optional<double> amplitudeIn, double fromMph,
            double toMph, double stepMph, double startDurationS, std::optional<double> startSweepFromMph,
-           double startRampS, double accuracy, int refinements, int newtonSteps, int jobs, const std::string& command) {
+           double startRampS, double accuracy, int refinements, int newtonSteps, double fdStepScale, int jobs,
+           const std::string& command) {
             app::OrbitsOptions o;  // the options of `rockroll orbits`
             o.scenario = sc.source;
             o.model = model;
@@ -317,6 +318,7 @@ PYBIND11_MODULE(_rockroll, m) {
             o.accuracy = accuracy;
             o.refinements = refinements;
             o.newtonSteps = newtonSteps;
+            o.fdStepScale = fdStepScale;
             o.jobs = jobs;
             o.json = true;  // no progress lines
             if (model) sc.model = *model;
@@ -336,7 +338,8 @@ PYBIND11_MODULE(_rockroll, m) {
         },
         py::arg("scenario"), py::arg("model"), py::arg("amplitude_in"), py::arg("from_mph"), py::arg("to_mph"),
         py::arg("step_mph"), py::arg("start_duration_s"), py::arg("start_sweep_from_mph"), py::arg("start_speed_ramp_s"),
-        py::arg("accuracy"), py::arg("refinements"), py::arg("newton_steps"), py::arg("jobs"), py::arg("command"));
+        py::arg("accuracy"), py::arg("refinements"), py::arg("newton_steps"), py::arg("fd_step_scale"),
+        py::arg("jobs"), py::arg("command"));
 
     m.def(
         "_modes",

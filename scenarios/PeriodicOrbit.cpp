@@ -34,6 +34,8 @@ PeriodicOrbitSolver::PeriodicOrbitSolver(Scenario base, double startDistance, Or
     : base_(std::move(base)), startDistance_(startDistance), settings_(settings) {
     trackPeriod_ = calcTrackPeriod(base_);
     checkSwitchesApply(base_);
+    if (!(settings_.stepScale > 0))
+        throw std::invalid_argument("periodic orbit: the finite-difference step scale must be positive");
     const ModelDescriptor& d = ModelRegistry::get().getModel(base_.model);
     const std::vector<StateKind> kinds = d.make(base_, makeTrackMotion(base_))->getStateKinds();
     if (kinds.empty())
@@ -45,8 +47,9 @@ PeriodicOrbitSolver::PeriodicOrbitSolver(Scenario base, double startDistance, Or
     for (size_t i = 0; i < kinds.size(); ++i) {
         if (kinds[i] == StateKind::Accumulating) continue;
         shot_.push_back(int(i));
-        steps.push_back(kinds[i] == StateKind::Position ? 1e-5 : kinds[i] == StateKind::Rate ? 1e-4 : 1e-7);
-        scales.push_back(kinds[i] == StateKind::Internal ? 1e-6 : steps.back());
+        const double h = kinds[i] == StateKind::Position ? 1e-5 : kinds[i] == StateKind::Rate ? 1e-4 : 1e-7;
+        steps.push_back(settings_.stepScale * h);
+        scales.push_back(kinds[i] == StateKind::Internal ? 1e-6 : h);
     }
     steps_ = Eigen::Map<const Eigen::VectorXd>(steps.data(), Eigen::Index(steps.size()));
     scales_ = Eigen::Map<const Eigen::VectorXd>(scales.data(), Eigen::Index(scales.size()));

@@ -13,7 +13,7 @@
 // y without the entries that grow without bound (StateKind::Accumulating: the
 // energy audit's integrals); the friction bristles are included. Steps h_i:
 // positions 10 µm (or 10 µrad), rates 0.1 mm/s, bristles 0.1 µm, as the
-// describing function's twin check. The mismatch is measured in the same units
+// describing function's twin check, times OrbitSettings::stepScale. The mismatch is measured in the same units
 // except for the bristles, in 1 µm (0.4 % of the wedges' bristle limit): a wedge
 // that sticks creeps by a few µm a period, the neutral direction Newton leaves
 // alone. Newton (mbmodel/PeriodicShooting.h) runs on
@@ -38,6 +38,9 @@ struct OrbitSettings {
     double accuracy = 1e-7;     ///< integrator accuracy of the map (≤ 0: the scenario's)
     ShootingSettings shooting;
     bool tryPeriodTwo = true;   ///< when P's Newton fails, shoot P∘P
+    /// Scales the finite-difference steps h_i; the mismatch stays measured in the unscaled
+    /// steps, so the tolerance does not move with it (the step-halving check, docs/orbits.md).
+    double stepScale = 1;
     /// A multiplier modulus up to this counts as not unstable: a wedge sticking all
     /// period long contributes μ = 1 with finite-difference noise.
     double stabilityMargin = 1.01;

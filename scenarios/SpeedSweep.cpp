@@ -127,8 +127,14 @@ SweepJump findSweepJump(const std::vector<double>& speedsMph, const std::vector<
     const double sign = direction == SweepDirection::Up ? 1 : -1;
     for (size_t i = 1; i < speedsMph.size() && i < steadyRollDeg.size(); ++i) {
         const double d = sign * (steadyRollDeg[i] - steadyRollDeg[i - 1]);  // false for a NaN
-        if (d > jump.changeDeg) jump.changeDeg = d, jump.speedMph = speedsMph[i];
+        if (d > jump.changeDeg) {
+            jump.changeDeg = d;
+            jump.largestChangeMph = speedsMph[i];
+            jump.changeFraction = steadyRollDeg[i - 1] > 0 ? d / steadyRollDeg[i - 1]
+                                                           : std::numeric_limits<double>::infinity();
+        }
     }
+    if (jump.changeFraction > kJumpFraction) jump.speedMph = jump.largestChangeMph;
     return jump;
 }
 

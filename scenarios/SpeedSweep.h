@@ -49,13 +49,20 @@ void checkSweepSpecs(const std::vector<SweepSpec>& specs);
 /// One sweep. onPoint is called after every speed (from this thread).
 std::vector<SweepPoint> runSweep(const SweepSpec& spec, const std::function<void(const SweepPoint&)>& onPoint = {});
 
-/// A sweep's jump: on the way up, the largest rise of the steady roll amplitude
-/// between neighbouring speeds; on the way down, the largest fall. speedMph is the
-/// speed after the change (NaN when the amplitude never rises, or falls); changeDeg
-/// its size (>= 0).
+/// A jump: between neighbouring speeds the steady roll amplitude changes by more than
+/// this fraction of the amplitude before the change (rising on the way up, falling on
+/// the way down). Smaller changes stay on a branch: the largest falls on section 2's
+/// down sweeps that do not leave the upper branch are 1–16 % (docs/validation.md).
+constexpr double kJumpFraction = 0.3;
+
+/// A sweep's jump: the largest rise (up) or fall (down) of the steady roll amplitude
+/// between neighbouring speeds, counted as a jump when it is more than kJumpFraction of
+/// the amplitude before it.
 struct SweepJump {
-    double speedMph = std::numeric_limits<double>::quiet_NaN();
-    double changeDeg = 0;
+    double speedMph = std::numeric_limits<double>::quiet_NaN();  ///< after the jump; NaN: no jump
+    double changeDeg = 0;       ///< the largest change (>= 0), a jump or not
+    double changeFraction = 0;  ///< changeDeg over the amplitude before it
+    double largestChangeMph = std::numeric_limits<double>::quiet_NaN();  ///< the speed after the largest change
 };
 /// The jump of amplitudes [deg] at speeds [mph], in the order visited; a NaN amplitude
 /// (a failed point) takes no part: neither pair it belongs to counts.

@@ -219,7 +219,8 @@ def steady(scenario, from_mph=10, to_mph=22, amplitude_in=None, stability="fold"
 
 
 def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0.25, start_duration_s=30,
-           start_sweep_from_mph=None, start_speed_ramp_s=1.0, accuracy=1e-7, refinements=2, newton_steps=20, jobs=0):
+           start_sweep_from_mph=None, start_speed_ramp_s=1.0, accuracy=1e-7, refinements=2, newton_steps=20, fd_step_scale=1.0,
+           jobs=0):
     """Periodic orbits of a time-domain model continued in speed, like `rockroll orbits --json`
     (docs/orbits.md): a dict with ``start``, ``points`` (one per orbit point computed, failed
     ones with ``converged`` False and their ``failure``), ``events``, ``stop_reason`` and
@@ -232,6 +233,8 @@ def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0
             raise ValueError(f"{name} = {v!r}: expected an integer in [{lo}, {hi}]")
     if not 1e-12 <= float(accuracy) <= 1e-3:
         raise ValueError(f"accuracy = {accuracy!r}: expected a number in [1e-12, 1e-3]")
+    if not 0.01 <= float(fd_step_scale) <= 100:
+        raise ValueError(f"fd_step_scale = {fd_step_scale!r}: expected a number in [0.01, 100]")
     if not 0 <= float(start_speed_ramp_s) <= 60:
         raise ValueError(f"start_speed_ramp_s = {start_speed_ramp_s!r}: expected a time in [0 s, 60 s]")
     if start_sweep_from_mph is None and float(start_speed_ramp_s) != 1.0:
@@ -240,13 +243,15 @@ def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0
     command = _call("orbits", sc, from_mph=from_mph, to_mph=to_mph, model=model, amplitude_in=amplitude_in,
                     step_mph=step_mph, start_duration_s=start_duration_s,
                     start_sweep_from_mph=start_sweep_from_mph, start_speed_ramp_s=start_speed_ramp_s,
-                    accuracy=accuracy, refinements=refinements, newton_steps=newton_steps, jobs=jobs)
+                    accuracy=accuracy, refinements=refinements, newton_steps=newton_steps,
+                    fd_step_scale=fd_step_scale, jobs=jobs)
     return _rockroll._orbits(sc, model, None if amplitude_in is None else _positive("amplitude_in", amplitude_in),
                              _positive("from_mph", from_mph), _positive("to_mph", to_mph),
                              _positive("step_mph", step_mph), _positive("start_duration_s", start_duration_s),
                              None if start_sweep_from_mph is None else _positive("start_sweep_from_mph",
                                                                                 start_sweep_from_mph),
-                             float(start_speed_ramp_s), float(accuracy), refinements, newton_steps, jobs, command)
+                             float(start_speed_ramp_s), float(accuracy), refinements, newton_steps,
+                             float(fd_step_scale), jobs, command)
 
 
 def modes(scenario, model=None):

@@ -116,7 +116,7 @@ def plot_steady(out, meta):
                          "steady_roll_amplitude_deg", marker=marker, linestyle="none", color=f"C{k}",
                          label=f"{s['model']} sweep {direction}")
         # Periodic orbits of the time-domain models (section 11), filled where stable.
-        for k, orb in enumerate(o for o in meta.get("orbits", []) if abs(o["amplitude_in"] - st["amplitude_in"]) < 1e-9):
+        for k, orb in enumerate(o for o in meta.get("orbits", []) if o["key"] == st["sweep_key"]):
             _, orows = read_csv(os.path.join(out, orb["file"]))
             marker = "o" if orb["model"] == "eom" else "s"
             for stable, fill in (("yes", "full"), ("no", "none")):

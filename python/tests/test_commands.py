@@ -64,3 +64,5 @@ def test_orbits_is_the_command_lines(cli_json):
         rockroll.orbits(LOADED, from_mph=12, to_mph=11, start_speed_ramp_s=0)
     with pytest.raises(ValueError, match="newton_steps"):
         rockroll.orbits(LOADED, from_mph=12, to_mph=11, newton_steps=0)
+    with pytest.raises(ValueError, match="fd_step_scale"):
+        rockroll.orbits(LOADED, from_mph=12, to_mph=11, fd_step_scale=0)

@@ -99,3 +99,17 @@ TEST(PeriodicOrbit, RefusesATrackThatDoesNotRepeat) {
     sc.model = model_names::kReduced;
     EXPECT_THROW(PeriodicOrbitSolver(sc, 100.0), ScenarioError);
 }
+
+// --fd-step-scale scales the finite-difference steps and nothing else: the mismatch of a
+// state is measured in the unscaled steps, so the convergence tolerance does not move.
+TEST(PeriodicOrbit, StepScaleScalesTheStepsOnly) {
+    const Scenario sc = makeLightScenario();
+    OrbitSettings half;
+    half.stepScale = 0.5;
+    const PeriodicOrbitSolver a(sc, 0.0), b(sc, 0.0, half);
+    ASSERT_EQ(a.getSteps().size(), b.getSteps().size());
+    for (Eigen::Index i = 0; i < a.getSteps().size(); ++i) EXPECT_DOUBLE_EQ(b.getSteps()[i], 0.5 * a.getSteps()[i]);
+    OrbitSettings zero;
+    zero.stepScale = 0;
+    EXPECT_THROW(PeriodicOrbitSolver(sc, 0.0, zero), std::invalid_argument);
+}

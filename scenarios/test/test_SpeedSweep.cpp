@@ -168,3 +168,18 @@ TEST(SpeedSweep, ResultsAreBitwiseTheSameForAnyNumberOfJobs) {
         }
     }
 }
+
+// A jump is a change of more than kJumpFraction of the amplitude before it: the fullcar's
+// 11 % dip coming down at 1.0 in (REPORT §2) is not one, the 0.5 in drop (73 %) is.
+TEST(SpeedSweep, AJumpIsAChangeOfMoreThanThirtyPercent) {
+    const SweepJump dip = findSweepJump({17.5, 17, 16.5, 16}, {4.25, 4.87, 4.33, 5.52}, SweepDirection::Down);
+    EXPECT_TRUE(std::isnan(dip.speedMph));
+    EXPECT_DOUBLE_EQ(dip.largestChangeMph, 16.5);
+    EXPECT_NEAR(dip.changeDeg, 0.54, 1e-12);
+    EXPECT_NEAR(dip.changeFraction, 0.54 / 4.87, 1e-12);
+    const SweepJump drop = findSweepJump({15, 14.5, 14, 13.5}, {1.86, 1.65, 0.44, 0.43}, SweepDirection::Down);
+    EXPECT_DOUBLE_EQ(drop.speedMph, 14);
+    const SweepJump up = findSweepJump({16, 16.5, 17}, {1.0, 1.29, 1.35}, SweepDirection::Up);  // 29 %
+    EXPECT_TRUE(std::isnan(up.speedMph));
+    EXPECT_DOUBLE_EQ(findSweepJump({16, 16.5, 17}, {1.0, 1.31, 1.35}, SweepDirection::Up).speedMph, 16.5);
+}
