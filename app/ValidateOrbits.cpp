@@ -270,7 +270,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         100 * kJumpFraction);
     md += "| car | A, in | model | V0 → V1, mph | S, mph | orbits converged | speeds covered, mph | roll amplitude, deg | "
           "stability, mph | where the branch ends | multiplier events | down sweep drops at (section 2) | the drop beside "
-          "the branch |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "the branch | shooting, min (one core) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     // A sweep's drop beside a branch: the drop lies between its speed before (drop + step)
     // and the drop speed (findSweepJump: the lower speed of the pair).
     auto describeDropBeside = [&](double dropMph, const OrbitCaseResult& r) {
@@ -316,7 +316,9 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                                            r.branch.endBracketMph->second, r.branch.endBracketMph->first)
                              : "the sweep never drops and the branch does not end: consistent";
         }
-        md += fmt::format("| {} | {:.2f} | {} | {:g} → {:g} | {:g} | {} of {} | {} | {} | {} | {} | {} | {} | {} |\n",
+        double shootingS = 0;
+        for (const auto& p : r.branch.points) shootingS += p.wallTimeS;
+        md += fmt::format("| {} | {:.2f} | {} | {:g} → {:g} | {:g} | {} of {} | {} | {} | {} | {} | {} | {} | {} | {:.1f} |\n",
                           r.c.car, r.c.amplitudeIn, r.c.model, r.c.startMph, r.c.toMph, r.c.stepMph, v.size(),
                           r.branch.points.size(),
                           v.empty() ? "—" : fmt::format("{:.2f}–{:.2f}", v.back()->speedMph, v.front()->speedMph),
@@ -329,7 +331,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                               ? fmt::format("never (largest fall {:.2f}° at {:g} mph)", r.sweepLargestFallDeg,
                                             r.sweepLargestFallMph)
                               : std::string("never"),
-                          verdict);
+                          verdict, shootingS / 60);
     }
 
     // Every drop of section 2, beside the branch it leaves: the model's own when computed here,
