@@ -1,6 +1,7 @@
 #include "app/Commands.h"
 #include "app/CommandResults.h"
 #include "app/JsonWriter.h"
+#include "mbmodel/Parallel.h"
 #include "app/BatchOutput.h"
 #include "app/Output.h"
 #include "app/Progress.h"
@@ -14,7 +15,6 @@
 #include "scenarios/ScenarioRun.h"
 
 #include <cstdio>
-#include <thread>
 #include <filesystem>
 #include <cmath>
 #include <fmt/format.h>
@@ -317,7 +317,7 @@ int sweepCommand(const SweepOptions& o) {
     for (const auto& s : specs) total += getSweepSpeeds(s).size();
     for (const auto& d : done) total -= d.size();
     SweepProgress progress("sweep", total);
-    const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = resolveJobCount(o.jobs);
     const auto results = runSweepsFrom(specs, jobs, done, [&](const SweepPoint& p, size_t sweep, size_t index) {
         if (journal) journal->append(toJournalJson(p, sweep, index));
         progress(p);

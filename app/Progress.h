@@ -16,7 +16,6 @@ public:
     SweepProgress(std::string label, size_t total);
     /// After each finished speed (runSweeps calls its callback under a lock).
     void operator()(const SweepPoint& p);
-    size_t getFailed() const { return failed_; }
 
     /// "3/10 speeds: 15.00 mph up (continued): severe, max roll 2.31 deg; ETA 12 s".
     static std::string formatLine(size_t done, size_t total, const SweepPoint& p, double etaS);

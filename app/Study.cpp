@@ -4,6 +4,7 @@
 #include "app/Journal.h"
 #include "scenarios/ScenarioRun.h"
 #include "scenarios/SpeedSweep.h"
+#include "scenarios/TomlInput.h"
 
 #include <algorithm>
 #include <charconv>
@@ -262,12 +263,7 @@ StudyPlan loadStudy(const std::string& path) {
     plan.content = readInputFile(path, "study file");  // its size limit and regular-file check
     plan.sha256 = calcSha256(plan.content);
     toml::table root;
-    try {
-        root = toml::parse(plan.content, path);
-    } catch (const toml::parse_error& e) {
-        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
-                                        e.source().begin.column, e.description()));
-    }
+    root = parseToml(plan.content, path);
     const std::set<std::string> known = {"description", "scenario", "model", "kind", "combine", "set", "sweep", "vary"};
     for (const auto& [k, n] : root)
         if (!known.count(std::string(k.str())))

@@ -14,7 +14,6 @@
 #include <fmt/ranges.h>
 #include <map>
 #include <mutex>
-#include <thread>
 
 namespace rockroll::app {
 
@@ -81,7 +80,7 @@ int studyCommand(const StudyOptions& o) {
     std::mutex lock;
     size_t finished = 0;
     const auto start = std::chrono::steady_clock::now();
-    const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = resolveJobCount(o.jobs);
     parallelFor(todo.size(), jobs, [&](size_t t) {
         results[t] = runStudyPoint(plan, todo[t]);
         std::lock_guard guard(lock);

@@ -5,6 +5,7 @@
 #include "app/Commands.h"
 #include "app/JsonWriter.h"
 #include "app/PlotCommand.h"
+#include "mbmodel/Parallel.h"
 #include "app/ValidateSections.h"
 
 #include <chrono>
@@ -16,7 +17,6 @@
 #include <functional>
 #include <stdexcept>
 #include <string_view>
-#include <thread>
 
 namespace rockroll::app {
 
@@ -50,7 +50,7 @@ int validateCommand(const ValidateOptions& o) {
     Settings s;
     s.quick = o.quick;
     s.out = o.outDir;
-    s.jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    s.jobs = resolveJobCount(o.jobs);
     s.rollLimitDeg = o.rollLimitDeg;
     s.wheelLoadLimit = o.wheelLoadLimit;
     // The full run sweeps reduced, eom and the half car on every case and the full car on the

@@ -17,7 +17,7 @@ std::string makeAddedDofSection(const Settings& s) {
     for (size_t i = 0; i < cases.size(); ++i)
         for (int m = 0; m < 2; ++m)
             jobs.push_back([&, i, m] {
-                Scenario sc = loadCar(cases[i].car);
+                Scenario sc = loadCarScenario(cases[i].car);
                 sc.model = m == 0 ? model_names::kFullCar : model_names::kHalfCar;
                 sc.track.amplitude = cases[i].amp * units::inch;
                 sc.speed = cases[i].mph * units::mph;

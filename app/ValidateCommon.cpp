@@ -13,7 +13,7 @@ void runJobs(const std::vector<std::function<void()>>& jobs, int threads) {
     parallelFor(jobs.size(), std::max(1, threads), [&](size_t i) { jobs[i](); });
 }
 
-Scenario loadCar(const std::string& car) {
+Scenario loadCarScenario(const std::string& car) {
     return loadScenarioFile(findDataFile("scenarios/" + car + ".toml").string());
 }
 
@@ -79,7 +79,7 @@ std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun
     std::vector<RunSummary> out(runs.size());
     std::map<std::string, Scenario> cars;  // each car's file read once, before the threads start
     for (const auto& r : runs)
-        if (!cars.count(r.car)) cars.emplace(r.car, loadCar(r.car));
+        if (!cars.count(r.car)) cars.emplace(r.car, loadCarScenario(r.car));
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < runs.size(); ++i)
         jobs.push_back([&, i] {

@@ -15,7 +15,7 @@ std::string makeModesSection() {
                      "(and `--model fullcar` for pitch and yaw); why coupled and uncoupled values differ: docs/model.md, "
                      "section Modes.\n\n| car | mode | coupled, Hz | Table 1 (report), Hz |\n|---|---|---|---|\n";
     for (const char* carName : {"70ton-loaded", "70ton-empty", "100ton-loaded"}) {
-        const Scenario sc = loadCar(carName);
+        const Scenario sc = loadCarScenario(carName);
         TrackSpec level = sc.track;
         level.amplitude = 0;
         for (const char* model : {model_names::kHalfCar, model_names::kFullCar}) {

@@ -131,7 +131,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
     }
     std::map<std::string, Scenario> cars;
     for (const auto& c : cases)
-        if (!cars.count(c.car)) cars.emplace(c.car, loadCar(c.car));
+        if (!cars.count(c.car)) cars.emplace(c.car, loadCarScenario(c.car));
     const Scenario& car = cars.at("70ton-loaded");
     std::vector<OrbitCaseResult> results(cases.size());
     std::vector<std::function<void()>> jobs;

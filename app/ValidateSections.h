@@ -122,7 +122,7 @@ namespace validate_detail {
 void runJobs(const std::vector<std::function<void()>>& jobs, int threads);
 
 /// scenarios/<car>.toml of the source tree.
-Scenario loadCar(const std::string& car);
+Scenario loadCarScenario(const std::string& car);
 
 /// The 70-ton loaded car (the embedded default scenario) at amplitude and speed,
 /// from rest, recorded at 100 Hz as in section 1.

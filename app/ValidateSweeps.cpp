@@ -82,7 +82,7 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
         SweepResult r;
         r.c = c;
         r.model = m;
-        const Scenario car = loadCar(c.car);
+        const Scenario car = loadCarScenario(c.car);
         r.criteria = car.criteria;
         results.push_back(r);
         for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {

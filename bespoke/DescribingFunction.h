@@ -198,7 +198,6 @@ public:
     DescribingFunctionModel(const CarParameters& car, double crossLevelAmplitude, double railLength);
     static double calcFundamentalCrossLevel(double amplitude, double wheelbase, double railLength);
 
-    double getInputAmplitude() const { return inputAmplitude_; }
     double calcOmega(double speedMph) const;
     /// Scaled harmonic-balance residual (forces in 10 kN, moments in 10 kN·m).
     Eigen::VectorXd calcResidual(const Eigen::VectorXd& x, double speedMph) const;

@@ -50,8 +50,8 @@ EomHalfCarModel::EomHalfCarModel(const CarParameters& car, RailStateFunction rai
     laws_.pinDamping = calcBristleDamping(laws_.pinStiffness, mB, car.lateralContactDampingRatio);
     laws_.wheelLateralStiffness = 2 * scale * car.wheelRailLateralStiffness;
     laws_.wheelLateralDamping = calcBristleDamping(laws_.wheelLateralStiffness, mass_[Wheelset], car.lateralContactDampingRatio);
-    const double kV = car.verticalFriction / car.frictionBristleDeflection;
-    const double kH = car.lateralFriction / car.frictionBristleDeflection;
+    const double kV = car.calcVerticalBristleStiffness();
+    const double kH = car.calcLateralBristleStiffness();
     const double zeta = car.frictionBristleDampingRatio;
     laws_.wedgeVertical = {car.verticalFriction, kV, calcBristleDamping(kV, mB / 2, zeta)};
     laws_.wedgeLateral = {car.lateralFriction, kH, calcBristleDamping(kH, mB / 2, zeta)};

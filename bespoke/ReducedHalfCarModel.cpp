@@ -196,7 +196,7 @@ void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memo
 }
 }  // namespace
 
-std::vector<double> ReducedHalfCarModel::calcStaticFlatState() const {
+std::vector<double> ReducedHalfCarModel::calcStaticState() const {
     return flatten(makeStaticState(), makeStaticMemory());
 }
 

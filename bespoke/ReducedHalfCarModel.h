@@ -61,7 +61,7 @@ public:
     TruckMemory makeStaticMemory() const;
     /// The static state and truck memory as one flat vector, the layout of
     /// RunResult::finalState and of simulateReduced's `initial`.
-    std::vector<double> calcStaticFlatState() const;
+    std::vector<double> calcStaticState() const;
     /// counts: the truck-mode search's counts are added there (nullptr: not counted).
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory, TruckSearchCounts* counts = nullptr) const;
 

@@ -381,9 +381,9 @@ TruckGeometry::TruckGeometry(const CarParameters& car)
       cpAboveSprings(car.centerPlateAboveSprings), sbAboveSprings(car.sideBearingAboveSprings),
       springTopAboveRail(car.springTopAboveRail), wheelRadius(car.wheelRadius), clearance(car.sideBearingClearance),
       Kv(car.springVerticalRate), travel(car.springTravel), Kb(car.bottomingRate), Fv(car.verticalFriction),
-      kBristle(car.verticalFriction / car.frictionBristleDeflection), Kh(car.springLateralRate),
+      kBristle(car.calcVerticalBristleStiffness()), Kh(car.springLateralRate),
       gibClearance(car.gibClearance), Kgib(car.gibRate), Fh(car.lateralFriction),
-      kBristleLateral(car.lateralFriction / car.frictionBristleDeflection),
+      kBristleLateral(car.calcLateralBristleStiffness()),
       kPin(car.contactStiffnessScale * car.centerPinStiffness) {}
 
 TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {

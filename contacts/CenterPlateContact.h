@@ -51,7 +51,6 @@ public:
                        CenterPlateLaw law);
 
     CenterPlateForces calcForces(const SimTK::State& s) const;
-    int getNumRimPoints() const { return int(pairs_.size()); }
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;

@@ -13,9 +13,6 @@ public:
 
     double calcDisplacement(const SimTK::State& s) const { return link_.calcRelativeLocation(s)[1]; }
     double calcForce(const SimTK::State& s) const;
-    bool isGibClosed(const SimTK::State& s) const {
-        return std::abs(calcDisplacement(s)) > law_.gibClearance;
-    }
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;

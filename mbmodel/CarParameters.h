@@ -60,6 +60,10 @@ struct CarParameters {
     double centerPlateRimPoints = 0;        ///< rim contact points in the full car
 
     double getCarBodyWeight() const { return bodyAndBolstersWeight - 2 * bolsterWeight; }
+    /// A friction wedge's bristle stiffness [N/m]: its friction force at the Coulomb limit
+    /// over the deflection it takes to get there (contacts/BristleFriction.h).
+    double calcVerticalBristleStiffness() const { return verticalFriction / frictionBristleDeflection; }
+    double calcLateralBristleStiffness() const { return lateralFriction / frictionBristleDeflection; }
 };
 
 /// One overridable parameter.

@@ -7,6 +7,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
+#include <thread>
 #include <vector>
 
 namespace rockroll {
@@ -49,6 +50,10 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
     }
     for (const auto& e : errors)
         if (e) std::rethrow_exception(e);
+}
+
+int resolveJobCount(int requested) {
+    return requested > 0 ? requested : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace rockroll

@@ -17,4 +17,7 @@ namespace rockroll {
 /// order they finished in.
 void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t)>& job);
 
+/// A --jobs option's thread count: `requested` when positive, else one per core (at least 1).
+int resolveJobCount(int requested);
+
 }  // namespace rockroll

@@ -80,8 +80,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
     }
     centerPlate_ = &addCustomForce<CenterPlateContact>(forces, forces, cpg, cpl);
 
-    const double kWedgeV = car_.verticalFriction / car_.frictionBristleDeflection;
-    const double kWedgeH = car_.lateralFriction / car_.frictionBristleDeflection;
+    const double kWedgeV = car_.calcVerticalBristleStiffness();
+    const double kWedgeH = car_.calcLateralBristleStiffness();
     const double zeta = car_.frictionBristleDampingRatio;
     for (int side : {kLeft, kRight}) {
         const double sg = kSideSign[side];

@@ -5,6 +5,7 @@
 #include "app/BuildInfo.h"
 #include "app/CommandResults.h"
 #include "app/OrbitsResults.h"
+#include "mbmodel/Parallel.h"
 #include "app/Provenance.h"
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
@@ -24,7 +25,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace py = pybind11;
@@ -266,7 +266,7 @@ PYBIND11_MODULE(_rockroll, m) {
             std::vector<std::vector<SweepPoint>> results;
             {
                 ReleasedRun released;
-                const int threads = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+                const int threads = resolveJobCount(o.jobs);
                 results = runSweeps(specs, threads);
             }
             py::list out;

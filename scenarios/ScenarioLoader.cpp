@@ -1,4 +1,5 @@
 #include "scenarios/ScenarioLoader.h"
+#include "scenarios/TomlInput.h"
 
 #include "scenarios/ModelRegistry.h"
 
@@ -16,7 +17,6 @@
 #include <set>
 #include <sstream>
 #include <openssl/evp.h>
-#include <toml++/toml.h>
 
 namespace rockroll {
 
@@ -50,6 +50,11 @@ std::vector<ValueRange> makeValueRanges() {
         {"limits.max_wall_time", Dimension::Time, 0, 7 * 86400, true, false, "s"},
         {"limits.severe_separation", Dimension::Time, 0, 1, false, false, "s"},
         {"attribution.truck_mass_scale", Dimension::Dimensionless, 0.001, 1, false, false, ""},
+        {"criteria.roll_peak_to_peak", Dimension::Angle, 0, 90 * units::degree, true, false, "deg"},
+        {"criteria.wheel_unloading", Dimension::Dimensionless, 0, 1, true, false, ""},
+        {"criteria.l_over_v", Dimension::Dimensionless, 0, 10, true, false, ""},
+        {"criteria.car_body_vertical_accel_g", Dimension::Dimensionless, 0, 10, true, false, ""},
+        {"criteria.car_body_lateral_accel_g", Dimension::Dimensionless, 0, 10, true, false, ""},
     };
     // Car parameters: finite, and positive unless zero means something (no clearance, no damping).
     for (const CarParameterInfo& info : getCarParameterTable())
@@ -60,6 +65,15 @@ std::vector<ValueRange> makeValueRanges() {
 
 std::string formatNumber(double v) { return fmt::format("{:.6g}", v); }
 }  // namespace
+
+toml::table parseToml(std::string_view text, const std::string& source) {
+    try {
+        return toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                        e.source().begin.column, e.description()));
+    }
+}
 
 bool ValueRange::contains(double si) const {
     if (!std::isfinite(si)) return false;
@@ -136,6 +150,12 @@ void checkScenario(const Scenario& sc) {
     check("limits.max_wall_time", l.maxWallTime);
     check("limits.severe_separation", sc.severeSeparationTime);
     check("attribution.truck_mass_scale", sc.attribution.truckMassScale);
+    const CriteriaLimits& c = sc.criteria;
+    check("criteria.roll_peak_to_peak", c.rollPeakToPeakDeg * units::degree);
+    check("criteria.wheel_unloading", c.wheelUnloading);
+    check("criteria.l_over_v", c.lOverV);
+    check("criteria.car_body_vertical_accel_g", c.carBodyVerticalAccelG);
+    check("criteria.car_body_lateral_accel_g", c.carBodyLateralAccelG);
 }
 
 void checkMemoryEstimate(const Scenario& sc, size_t channels) {
@@ -215,18 +235,12 @@ public:
         if (auto v = n->value<std::string>()) return *v;
         fail(key, describe(*n), "a string");
     }
+    /// A TOML boolean only (toml++'s value<bool>() would also take 0 or 1).
     bool getBool(const std::string& key, bool fallback) {
         if (!has(key)) return fallback;
         const toml::node* n = require(key);
-        if (auto v = n->value<bool>()) return *v;
+        if (n->is_boolean()) return *n->value<bool>();
         fail(key, describe(*n), "true or false");
-    }
-    long getInt(const std::string& key, long fallback, long minimum) {
-        if (!has(key)) return fallback;
-        const toml::node* n = require(key);
-        const auto v = n->value<int64_t>();
-        if (!v || !n->is_integer() || *v < minimum) fail(key, describe(*n), fmt::format("an integer ≥ {}", minimum));
-        return long(*v);
     }
     /// Every key present in the table that nobody read is an error.
     void rejectUnknown(const std::set<std::string>& alsoAllowed = {}) const {
@@ -271,15 +285,6 @@ void checkCarValue(const TableReader& reader, const std::string& key, const CarP
                    const toml::node& given) {
     const ValueRange& range = getValueRange(std::string("car.") + info.key);
     if (!range.contains(value)) reader.fail(key, TableReader::describe(given), range.describe());
-}
-
-toml::table parseToml(std::string_view text, const std::string& source) {
-    try {
-        return toml::parse(text, source);
-    } catch (const toml::parse_error& e) {
-        throw ScenarioError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                        e.source().begin.column, e.description()));
-    }
 }
 
 
@@ -484,22 +489,15 @@ void readLimits(const toml::table& root, const std::string& src, Scenario& sc) {
     lim.rejectUnknown();
 }
 
-/// A TOML boolean only (toml++ would read 0 or 1 as a bool).
-bool getStrictBool(TableReader& table, const std::string& key, bool fallback) {
-    if (table.has(key) && !table.require(key)->is_boolean())
-        table.fail(key, TableReader::describe(*table.require(key)), "true or false");
-    return table.getBool(key, fallback);
-}
-
 void readReduced(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader reduced(getTable(root, "reduced", src, false), src, "reduced.");
-    sc.reduced.truckWeight = getStrictBool(reduced, "truck_weight", false);
+    sc.reduced.truckWeight = reduced.getBool("truck_weight", false);
     reduced.rejectUnknown();
 }
 
 void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
     TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
-    sc.attribution.truckGravity = getStrictBool(attribution, "truck_gravity", true);
+    sc.attribution.truckGravity = attribution.getBool("truck_gravity", true);
     sc.attribution.truckMassScale = attribution.getRanged("truck_mass_scale", sc.attribution.truckMassScale);
     attribution.rejectUnknown();
 }
@@ -507,26 +505,15 @@ void readAttribution(const toml::table& root, const std::string& src, Scenario& 
 /// [criteria]: limits of the summary's freight criteria (mbmodel/RunSummary.h,
 /// CriteriaLimits); every key optional, each a positive finite limit.
 void readCriteria(const toml::table& root, const std::string& src, Scenario& sc) {
-    using units::Dimension;
     TableReader table(getTable(root, "criteria", src, false), src, "criteria.");
     CriteriaLimits& c = sc.criteria;
-    auto ranged = [&](const char* key, Dimension dim, double fallback, double hi, const std::string& expected) {
-        if (!table.has(key)) return fallback;
-        const double v = table.getQuantity(key, dim);
-        if (!std::isfinite(v) || v <= 0 || v > hi) table.fail(key, TableReader::describe(*table.require(key)), expected);
-        return v;
-    };
-    // Echoed in degrees without the conversion's round-off.
-    c.rollPeakToPeakDeg = std::round(ranged("roll_peak_to_peak", Dimension::Angle, c.rollPeakToPeakDeg * units::degree,
-                                            90 * units::degree, "an angle in (0, 90 deg]") /
-                                     units::degree * 1e9) / 1e9;
-    c.wheelUnloading = ranged("wheel_unloading", Dimension::Dimensionless, c.wheelUnloading, 1,
-                              "a plain number in (0, 1]: (static - load) / static");
-    c.lOverV = ranged("l_over_v", Dimension::Dimensionless, c.lOverV, 10, "a plain number in (0, 10]");
-    c.carBodyVerticalAccelG = ranged("car_body_vertical_accel_g", Dimension::Dimensionless, c.carBodyVerticalAccelG,
-                                     10, "a plain number of g in (0, 10]");
-    c.carBodyLateralAccelG = ranged("car_body_lateral_accel_g", Dimension::Dimensionless, c.carBodyLateralAccelG, 10,
-                                    "a plain number of g in (0, 10]");
+    // Kept in degrees, rounded so the echo has no conversion round-off.
+    c.rollPeakToPeakDeg =
+        std::round(table.getRanged("roll_peak_to_peak", c.rollPeakToPeakDeg * units::degree) / units::degree * 1e9) / 1e9;
+    c.wheelUnloading = table.getRanged("wheel_unloading", c.wheelUnloading);
+    c.lOverV = table.getRanged("l_over_v", c.lOverV);
+    c.carBodyVerticalAccelG = table.getRanged("car_body_vertical_accel_g", c.carBodyVerticalAccelG);
+    c.carBodyLateralAccelG = table.getRanged("car_body_lateral_accel_g", c.carBodyLateralAccelG);
     table.rejectUnknown();
 }
 

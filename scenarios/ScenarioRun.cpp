@@ -3,6 +3,7 @@
 #include "mbmodel/RockingModel.h"
 #include "mbmodel/TrackInput.h"
 #include "scenarios/ModelRegistry.h"
+#include "scenarios/models/SimbodyTimeDomainModel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,8 +37,7 @@ std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunSta
     if (!d.isMultibody())
         throw ScenarioError(fmt::format("{}: model \"{}\" is not a multibody model; expected one of {}", sc.source,
                                         sc.model, fmt::join(ModelRegistry::get().getMultibodyNames(), ", ")));
-    return d.makeMultibody(sc.car, TrackInput(sc.track),
-                           ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc, start), sc.attribution});
+    return d.makeMultibody(sc.car, TrackInput(sc.track), makeModelOptions(sc, makeTrackMotion(sc, start)));
 }
 
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const TrackMotion& motion) {

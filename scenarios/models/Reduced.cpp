@@ -13,7 +13,7 @@ class ReducedTimeDomainModel final : public TimeDomainModel {
 public:
     explicit ReducedTimeDomainModel(ReducedHalfCarModel model) : model_(std::move(model)) {}
     const ChannelLayout& getChannels() const override { return model_.getChannels(); }
-    std::vector<double> calcStaticState() const override { return model_.calcStaticFlatState(); }
+    std::vector<double> calcStaticState() const override { return model_.calcStaticState(); }
     RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const override {
         return simulateReduced(model_, sc.run.duration, nullptr, y0, resolveRunLimits(sc.run.limits, sc.car));
     }

@@ -137,6 +137,22 @@ TEST(ScenarioLoader, CheckScenarioRefusesValuesChangedAfterLoading) {
               }).find("expected at least 4 output intervals, a duration ≥ 0.4 s"),
               std::string::npos);
     EXPECT_NE(errorAfter([](Scenario& sc) { sc.filterCutoffHz = 300; }).find("Nyquist"), std::string::npos);
+    // The [criteria] limits share the one range table with the reader.
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.criteria.wheelUnloading = 1.5; })
+                  .find("key 'criteria.wheel_unloading' = 1.5: expected a number in (0, 1]"),
+              std::string::npos);
+}
+
+// Every boolean key is a TOML boolean: toml++ alone would read 0 and 1 as false and true.
+TEST(ScenarioLoader, BooleansAreTomlBooleansOnly) {
+    for (const char* text : {"[track]\nmirror = 1\n", "[track]\nrepeat = 0\n", "[eom]\nsmall_angles = 1\n",
+                             "[limits]\nenabled = 0\n", "[reduced]\ntruck_weight = 1\n",
+                             "[attribution]\ntruck_gravity = 0\n"})
+        EXPECT_NE(errorOf(text).find("expected true or false"), std::string::npos) << text << ": " << errorOf(text);
+    EXPECT_EQ(errorOf("[eom]\nsmall_angles = true\n"), "");
+    const std::string e = errorOf("[criteria]\nl_over_v = 20\n");
+    EXPECT_NE(e.find("criteria.l_over_v"), std::string::npos) << e;
+    EXPECT_NE(e.find("(0, 10]"), std::string::npos) << e;
 }
 
 TEST(ScenarioLoader, MemoryEstimateRefusesARunAboveTheLimit) {
