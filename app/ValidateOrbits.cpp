@@ -42,6 +42,7 @@ struct OrbitCaseResult {
     bool swept = false;         ///< section 2 swept this model and amplitude
     double sweepDropMph = NAN;  ///< section 2's down sweep's (ramped) jump, NaN: none (kJumpFraction)
     double sweepLargestFallDeg = 0, sweepLargestFallMph = NAN;  ///< its largest fall between neighbouring speeds
+    double sweepLowestMph = NAN;  ///< the down sweep's last (lowest) speed
     /// Per orbit speed (eom): the smallest instantaneous speed step down, of kBasinSteps,
     /// after which the run ends off the branch; NaN: none of them; −1: no step tried (no
     /// orbit at any new speed to compare with).
@@ -149,6 +150,7 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 const SweepJump j = findSweepJump(sw->down, SweepDirection::Down);
                 r.sweepLargestFallDeg = j.changeDeg, r.sweepLargestFallMph = j.largestChangeMph;
                 r.sweepDropMph = j.speedMph;
+                if (!sw->down.empty()) r.sweepLowestMph = sw->down.back().speedMph;
                 for (const auto& p : sw->down)
                     if (std::abs(p.speedMph - r.c.startMph) < 1e-9 && !p.failed && p.next.from) from = p.next.from;
                 r.start = fmt::format("section 2's down sweep at {:g} mph", r.c.startMph);
@@ -312,9 +314,17 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         } else if (!r.swept) {
             verdict = "not swept in this run";
         } else {
-            verdict = folded ? fmt::format("the sweep never drops, yet the branch folds at {:.2f}–{:.2f} mph",
-                                           r.branch.endBracketMph->second, r.branch.endBracketMph->first)
-                             : "the sweep never drops and the branch does not end: consistent";
+            // A branch that ends (a fold or not) below the sweep's lowest speed does not contradict it.
+            const auto& end = r.branch.endBracketMph;
+            if (!end)
+                verdict = "the sweep never drops and the branch does not end: consistent";
+            else if (end->first < r.sweepLowestMph)
+                verdict = fmt::format("the sweep never drops; the branch {} between {:.2f} and {:.2f} mph, below the "
+                                      "lowest speed swept ({:g} mph): consistent",
+                                      folded ? "folds" : "ends", end->second, end->first, r.sweepLowestMph);
+            else
+                verdict = fmt::format("the sweep never drops, yet the branch {} between {:.2f} and {:.2f} mph",
+                                      folded ? "folds" : "ends", end->second, end->first);
         }
         double shootingS = 0;
         for (const auto& p : r.branch.points) shootingS += p.wallTimeS;
