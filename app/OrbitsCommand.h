@@ -23,6 +23,8 @@ struct OrbitsOptions : CommonOptions {
     double accuracy = 1e-7;      ///< integrator accuracy of the map
     int refinements = 2;         ///< step halvings at a failure before the branch ends
     int newtonSteps = 20;        ///< Newton steps per shooting (on P, then on P∘P)
+    int settlePeriods = 0;
+    bool iterate = false;        ///< find each orbit by iterating the map (attracting orbits only), not Newton       ///< periods the map runs from the start before the first shooting
     double fdStepScale = 1;      ///< scales the monodromy's finite-difference steps (the tolerance is unchanged)
     int jobs = 0;                ///< threads for the monodromy's columns (0: one per core)
     bool json = false;

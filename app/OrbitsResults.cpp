@@ -43,7 +43,7 @@ json makePointJson(const PeriodicOrbit& p) {
     j["max_side_bearing_load_lb"] = s.maxSideBearingLoadLb;
     j["max_center_plate_load_lb"] = s.maxCenterPlateLoadLb;
     j["regime"] = s.regime;
-    j["max_multiplier"] = p.maxMultiplier;
+    j["max_multiplier"] = numberOrNull(p.maxMultiplier);
     j["largest_real_multiplier"] = numberOrNull(p.largestRealMultiplier);
     j["smallest_real_multiplier"] = numberOrNull(p.smallestRealMultiplier);
     j["stable"] = p.stable;
@@ -83,6 +83,7 @@ OrbitSettings checkOrbitsInput(const Scenario& sc0, const OrbitsOptions& o) {
     settings.shooting.threads = o.jobs;
     settings.shooting.maxIterations = o.newtonSteps;
     settings.stepScale = o.fdStepScale;
+    settings.method = o.iterate ? OrbitMethod::Iteration : OrbitMethod::Newton;
     { const PeriodicOrbitSolver check(sc0, 0.0, settings); }  // ScenarioError: a model whose state cannot be shot
     return settings;
 }
@@ -148,6 +149,7 @@ OrbitsResult calcOrbits(const Scenario& sc0, const OrbitsOptions& o, const std::
     cs.toMph = o.toMph;
     cs.stepMph = o.stepMph;
     cs.refinements = o.refinements;
+    cs.settlePeriods = o.settlePeriods;
     const OrbitContinuation continuation(solver, cs);
     OrbitsResult result;
     result.branch = continuation.trace(startState.y, [&](const PeriodicOrbit& p) {
@@ -173,8 +175,10 @@ OrbitsResult calcOrbits(const Scenario& sc0, const OrbitsOptions& o, const std::
     j["method"] = "shooting on the one-period map P(y) = phi_T(y), T = L/V, Newton with a finite-difference "
                   "monodromy (a chord Newton from the previous orbit's along the branch); natural-parameter continuation in "
                   "speed with a secant predictor (docs/orbits.md)";
+    j["orbit_method"] = o.iterate ? "iteration" : "newton";
     j["accuracy"] = o.accuracy;
     j["fd_step_scale"] = o.fdStepScale;
+    j["settle_periods"] = o.settlePeriods;
     j["start"] = {{"speed_mph", o.fromMph},
                   {"kind", startKind},
                   {"sweep_from_mph", o.startSweepFromMph ? json(*o.startSweepFromMph) : json(nullptr)},

@@ -241,6 +241,13 @@ int main(int argc, char** argv) {
     orbitsCmd->add_option("--newton-steps", orbits.newtonSteps, "Newton steps per shooting, on P and then on P∘P")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
+    orbitsCmd->add_flag("--iterate", orbits.iterate,
+                        "find each orbit by iterating the one-period map (attracting orbits only, no Floquet "
+                        "multipliers) instead of Newton: for the reduced model (docs/orbits.md)");
+    orbitsCmd->add_option("--settle-periods", orbits.settlePeriods,
+                          "forcing periods the start runs at --from-mph before the first shooting")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
     orbitsCmd->add_option("--fd-step-scale", orbits.fdStepScale,
                           "scales the monodromy's finite-difference steps; the convergence tolerance stays")
         ->capture_default_str()

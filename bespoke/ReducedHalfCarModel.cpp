@@ -180,6 +180,15 @@ std::vector<double> flatten(const ReducedHalfCarModel::State& y, const Memory& m
 void unflatten(const std::vector<double>& f, ReducedHalfCarModel::State& y, Memory& m) {
     if (int(f.size()) != kFlatSize)
         throw std::invalid_argument("reduced model: initial state has the wrong size");
+    // The mode's enumerations: whole numbers in their ranges (a state from elsewhere is checked, not trusted).
+    const int counts[8] = {8, 3, 3, 3, 3, 3, 3, 3};
+    for (int i = 0; i < 8; ++i) {
+        const double v = f[size_t(6 + i)];
+        if (!(v >= 0 && v < counts[i] && v == std::floor(v)))
+            throw std::invalid_argument(fmt::format("reduced model: initial state entry {} (a truck-mode enumeration) "
+                                                    "is {}; expected a whole number in [0, {}]",
+                                                    6 + i, v, counts[i] - 1));
+    }
     for (int i = 0; i < 6; ++i) y[i] = f[i];
     m.mode.support = CarBodySupport(int(f[6]));
     m.mode.wheels = WheelContact(int(f[7]));
@@ -233,28 +242,35 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         return result.history.samples.back();
     };
     guard.check(accept(0), result);
-    const long n = std::lround(duration / h);
+    // Whole steps of Δt, then one shorter step to end at `duration` exactly when it is
+    // not a whole number of steps (a periodic orbit's map runs over T = L / V).
+    const long n = long(std::floor(duration / h + 1e-9));
+    const double last = duration - double(n) * h;
+    const long total = last > 1e-9 * h ? n + 1 : n;
     long k = 0;
-    for (; k < n && !result.stop; ++k) {
-        const double t = k * h;
+    double t = 0;
+    for (; k < total && !result.stop; ++k) {
+        const double dt = k < n ? h : last;
         const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + h / 2, y + h / 2 * e1.derivative, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + h / 2, y + h / 2 * e2.derivative, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + h, y + h * e3.derivative, mem, &st.modes);
-        y += h / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
-        energy[0] += h / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
+        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + dt / 2, y + dt / 2 * e1.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + dt / 2, y + dt / 2 * e2.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + dt, y + dt * e3.derivative, mem, &st.modes);
+        y += dt / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
+        energy[0] += dt / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
+        const double tNext = k < n ? double(k + 1) * h : duration;
         if (!y.allFinite()) {
             throw NumericalFailure(fmt::format(
                 "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",
-                t + h, mem.mode.describe(), y[0], y[1], y[2]), t + h);
+                tNext, mem.mode.describe(), y[0], y[1], y[2]), tNext);
         }
-        guard.check(accept(t + h), result);
+        guard.check(accept(tNext), result);
+        t = tNext;
         ++st.steps;
     }
     result.steps = st.steps;
     result.finalState = flatten(y, mem);
     result.realizations = 4 * st.steps + st.steps + 1;
-    result.simTime = k * h;
+    result.simTime = t;
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     if (stats) *stats = st;
     return result;

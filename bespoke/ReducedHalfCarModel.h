@@ -107,7 +107,8 @@ struct ReducedRunStatistics {
     TruckSearchCounts modes;  ///< every truck-mode search of the run
 };
 
-/// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz). From static
+/// Fixed-step RK4 at Δt = 0.005 s; records every step (200 Hz). A duration that is
+/// not a whole number of steps ends with one shorter step. From static
 /// equilibrium, or from `initial` (a previous RunResult::finalState: the car
 /// body state followed by the truck's memory).
 /// `limits` (resolved) stop the run on derailment or overturning and fail it on

@@ -305,7 +305,8 @@ PYBIND11_MODULE(_rockroll, m) {
         "_orbits",
         [](Scenario sc, std::optional<std::string> model, std::optional<double> amplitudeIn, double fromMph,
            double toMph, double stepMph, double startDurationS, std::optional<double> startSweepFromMph,
-           double startRampS, double accuracy, int refinements, int newtonSteps, double fdStepScale, int jobs,
+           double startRampS, double accuracy, int refinements, int newtonSteps, int settlePeriods, bool iterate,
+           double fdStepScale, int jobs,
            const std::string& command) {
             app::OrbitsOptions o;  // the options of `rockroll orbits`
             o.scenario = sc.source;
@@ -318,6 +319,8 @@ PYBIND11_MODULE(_rockroll, m) {
             o.accuracy = accuracy;
             o.refinements = refinements;
             o.newtonSteps = newtonSteps;
+            o.settlePeriods = settlePeriods;
+            o.iterate = iterate;
             o.fdStepScale = fdStepScale;
             o.jobs = jobs;
             o.json = true;  // no progress lines
@@ -338,7 +341,8 @@ PYBIND11_MODULE(_rockroll, m) {
         },
         py::arg("scenario"), py::arg("model"), py::arg("amplitude_in"), py::arg("from_mph"), py::arg("to_mph"),
         py::arg("step_mph"), py::arg("start_duration_s"), py::arg("start_sweep_from_mph"), py::arg("start_speed_ramp_s"),
-        py::arg("accuracy"), py::arg("refinements"), py::arg("newton_steps"), py::arg("fd_step_scale"),
+        py::arg("accuracy"), py::arg("refinements"), py::arg("newton_steps"), py::arg("settle_periods"), py::arg("iterate"),
+        py::arg("fd_step_scale"),
         py::arg("jobs"), py::arg("command"));
 
     m.def(

@@ -28,7 +28,10 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
     auto report = [&](const PeriodicOrbit& o) {
         if (progress) progress(o);
     };
-    PeriodicOrbit cur = solver_.solve(settings_.fromMph, start);
+    const std::vector<double> settled =
+        settings_.settlePeriods > 0 ? solver_.runPeriods(settings_.fromMph, start, settings_.settlePeriods).restart.y
+                                    : start;
+    PeriodicOrbit cur = solver_.solve(settings_.fromMph, settled);
     b.points.push_back(cur);
     report(cur);
     if (!cur.converged) {
@@ -54,6 +57,7 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
         if (prev && prev->period == cur.period) {
             const double f = (next - cur.speedMph) / (cur.speedMph - prev->speedMph);
             for (size_t i = 0; i < guess.size(); ++i) guess[i] = cur.y[i] + f * (cur.y[i] - prev->y[i]);
+            for (int i : solver_.getDiscreteIndices()) guess[size_t(i)] = cur.y[size_t(i)];
         }
         const bool reuse = settings_.reuseMonodromy && cur.period == 1;
         PeriodicOrbit o = solver_.solve(next, guess, reuse ? cur.monodromy : Eigen::MatrixXd());
@@ -83,7 +87,8 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
             // and the fold lies between it and the failed speed).
             const bool nearOne = cur.largestRealMultiplier > settings_.foldMultiplier &&
                                  cur.largestRealMultiplier < 2 - settings_.foldMultiplier;
-            const bool fold = nearOne || crossedPlusOne;
+            const bool iterated = cur.method == OrbitMethod::Iteration;
+            const bool fold = !iterated && (nearOne || crossedPlusOne);
             OrbitEvent e;
             e.kind = fold ? "fold" : "branch end";
             e.fromMph = cur.speedMph;
@@ -93,7 +98,9 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
                                    cur.speedMph, cur.largestRealMultiplier, cur.maxMultiplier, o.speedMph, o.failure);
             b.events.push_back(e);
             b.stopReason = fold ? std::string(nearOne ? "fold" : "fold (a real multiplier crossed +1 just before it)")
-                                : fmt::format("branch end (shooting failed; the last orbit's largest real "
+                           : iterated ? std::string("branch end (iteration: no attracting orbit on this branch past it; "
+                                                    "a fold is not told from a loss of stability)")
+                                      : fmt::format("branch end (shooting failed; the last orbit's largest real "
                                                        "multiplier {:.4f} is not near +1)",
                                                        cur.largestRealMultiplier);
             break;

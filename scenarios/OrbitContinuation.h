@@ -36,6 +36,10 @@ struct OrbitContinuationSettings {
     double jumpFraction = 0.3;    ///< |Δ roll amplitude| / roll amplitude above which an orbit is another branch's
     double foldMultiplier = 0.8;  ///< the end is a fold when the last orbit's largest real multiplier is in (this, 2 − this)
     bool reuseMonodromy = true;   ///< start each shooting from the last period-1 orbit's monodromy (chord Newton)
+    /// Periods the map is iterated from `start` at fromMph before the first shooting: a
+    /// stable orbit's basin pulls the start closer, for a map whose finite-difference
+    /// monodromy is poor far from the orbit (the reduced model's piecewise truck, docs/orbits.md).
+    int settlePeriods = 0;
 };
 
 struct OrbitEvent {
@@ -55,7 +59,7 @@ struct OrbitBranch {
 class OrbitContinuation {
 public:
     OrbitContinuation(const PeriodicOrbitSolver& solver, OrbitContinuationSettings settings);
-    /// From the flat state `start` (a long run's end): the orbit at fromMph, then on
+    /// From the flat state `start` (a long run's end, advanced by settlePeriods): the orbit at fromMph, then on
     /// towards toMph. The first point not converging ends the branch at once
     /// (stopReason "no orbit at the start speed").
     OrbitBranch trace(const std::vector<double>& start,

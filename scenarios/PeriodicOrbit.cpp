@@ -45,7 +45,8 @@ PeriodicOrbitSolver::PeriodicOrbitSolver(Scenario base, double startDistance, Or
     stateSize_ = kinds.size();
     std::vector<double> steps, scales;
     for (size_t i = 0; i < kinds.size(); ++i) {
-        if (kinds[i] == StateKind::Accumulating) continue;
+        if (kinds[i] == StateKind::Discrete) discrete_.push_back(int(i));
+        if (kinds[i] == StateKind::Accumulating || kinds[i] == StateKind::Discrete) continue;
         shot_.push_back(int(i));
         const double h = kinds[i] == StateKind::Position ? 1e-5 : kinds[i] == StateKind::Rate ? 1e-4 : 1e-7;
         steps.push_back(settings_.stepScale * h);
@@ -112,12 +113,15 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
     const auto wall0 = std::chrono::steady_clock::now();
     PeriodicOrbit o;
     o.speedMph = speedMph;
+    // The entries not shot (discrete modes, accumulating integrals) come from `like`.
+    std::vector<double> like = guess;
     auto mapOf = [&](int periods) {
-        return [this, speedMph, periods, &guess](const Eigen::VectorXd& x) {
-            return toShooting(runPeriods(speedMph, toFull(x, guess), periods).restart.y);
+        return [this, speedMph, periods, &like](const Eigen::VectorXd& x) {
+            return toShooting(runPeriods(speedMph, toFull(x, like), periods).restart.y);
         };
     };
     const Eigen::VectorXd x0 = toShooting(guess);
+    if (settings_.method == OrbitMethod::Iteration) return iterate(speedMph, guess, wall0);
     ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting, scales_).solve(x0, startMonodromy);
     o.mapEvaluations = r.mapEvaluations;
     int period = 1;
@@ -131,7 +135,26 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
             r.failure += fmt::format("; shooting on two periods: {}", r2.failure);
         }
     }
-    o.y = toFull(r.x, guess);
+    // A discrete mode is held at the guess's during Newton. An orbit must come back to
+    // the mode it started from: when it does not, Newton runs again (chord, from the
+    // monodromy just found) with the mode the map reached.
+    for (int pass = 0; r.converged && !discrete_.empty(); ++pass) {
+        const std::vector<double> end = runPeriods(speedMph, toFull(r.x, like), period).restart.y;
+        ++o.mapEvaluations;
+        bool same = true;
+        for (int i : discrete_) same = same && end[size_t(i)] == like[size_t(i)];
+        if (same) break;
+        if (pass == 2) {
+            r.converged = false;
+            r.failure = "the discrete mode a period after the orbit's start differs from the one it started in";
+            break;
+        }
+        for (int i : discrete_) like[size_t(i)] = end[size_t(i)];
+        const int evaluations = o.mapEvaluations;
+        r = PeriodicShooting(mapOf(period), steps_, settings_.shooting, scales_).solve(r.x, r.monodromy);
+        o.mapEvaluations = evaluations + r.mapEvaluations;
+    }
+    o.y = toFull(r.x, like);
     o.mismatch = r.mismatch;
     o.iterations = r.iterations;
     o.multipliers = r.multipliers;
@@ -158,7 +181,77 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
                 o.smallestRealMultiplier = std::min(o.smallestRealMultiplier, mu.real());
             }
         o.stable = o.maxMultiplier <= settings_.stabilityMargin;
+        describe(o);
+    }
+    o.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    return o;
+}
 
+PeriodicOrbit PeriodicOrbitSolver::iterate(double speedMph, const std::vector<double>& guess,
+                                           std::chrono::steady_clock::time_point wall0) const {
+    PeriodicOrbit o;
+    o.speedMph = speedMph;
+    o.method = OrbitMethod::Iteration;
+    const double tol = settings_.shooting.tolerance;
+    auto distance = [&](const std::vector<double>& a, const std::vector<double>& b) {
+        return (toShooting(a) - toShooting(b)).cwiseQuotient(scales_).cwiseAbs().maxCoeff();
+    };
+    // ys[k] = P^k(guess); d1[k] = |ys[k+1] − ys[k]|, d2[k] = |ys[k+2] − ys[k]| (in the mismatch scales).
+    std::vector<std::vector<double>> ys{guess};
+    std::vector<double> d1, d2;
+    auto contraction = [](const std::vector<double>& d) {
+        const size_t m = std::min<size_t>(5, d.size() - 1);
+        if (m == 0 || !(d[d.size() - 1 - m] > 0)) return std::numeric_limits<double>::quiet_NaN();
+        return std::pow(d.back() / d[d.size() - 1 - m], 1.0 / double(m));
+    };
+    std::vector<double> found;
+    try {
+        for (int k = 0; k < settings_.iterationPeriods && o.period == 0; ++k) {
+            ys.push_back(runPeriods(speedMph, ys.back(), 1).restart.y);
+            ++o.mapEvaluations;
+            const size_t n = ys.size();
+            d1.push_back(distance(ys[n - 1], ys[n - 2]));
+            // At least three periods, for the contraction estimate.
+            if (d1.back() < tol && d1.size() >= 3) {
+                o.period = 1, found = ys[n - 2], o.mismatch = o.periodOneMismatch = d1.back();
+                o.maxMultiplier = contraction(d1);
+            } else if (n >= 3) {
+                d2.push_back(distance(ys[n - 1], ys[n - 3]));
+                if (d2.back() < tol && d2.size() >= 2) {
+                    o.period = 2, found = ys[n - 3], o.mismatch = d2.back();
+                    o.periodOneMismatch = d1[d1.size() - 2];
+                    o.maxMultiplier = contraction(d2);
+                }
+            }
+            if (ys.size() > 3) ys.erase(ys.begin());
+        }
+    } catch (const NumericalFailure& e) {
+        o.failure = fmt::format("the map failed after {} periods: {}", o.mapEvaluations, e.what());
+    }
+    o.iterations = o.mapEvaluations;
+    if (o.period == 0) {
+        o.y = ys.back();
+        o.mismatch = d1.empty() ? 0.0 : d1.back();
+        if (o.failure.empty())
+            o.failure = fmt::format("iteration: P(y) − y still {:.3g} perturbation steps after {} periods "
+                                    "(P∘P(y) − y: {:.3g})",
+                                    o.mismatch, o.mapEvaluations, d2.empty() ? 0.0 : d2.back());
+    } else {
+        o.converged = true;
+        o.y = found;
+        o.iterations = o.mapEvaluations;
+        o.largestRealMultiplier = o.smallestRealMultiplier = std::numeric_limits<double>::quiet_NaN();
+        o.stable = true;  // iteration only reaches attracting orbits
+        describe(o);
+    }
+    o.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    return o;
+}
+
+void PeriodicOrbitSolver::describe(PeriodicOrbit& o) const {
+    const double speedMph = o.speedMph;
+    const int period = o.period;
+    {
         // One orbit period from y: the summary's filtered maxima over it (the criteria over all of it).
         o.run = runPeriods(speedMph, o.y, period);
         const Scenario sc = makeScenario(speedMph, period);
@@ -198,8 +291,6 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
         }
         o.wheelLiftFraction = double(lifted) / double(n);
     }
-    o.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    return o;
 }
 
 }  // namespace rockroll

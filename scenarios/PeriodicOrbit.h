@@ -11,7 +11,9 @@
 //
 // and a periodic orbit is a fixed point P(y*) = y*. The shooting coordinates x are
 // y without the entries that grow without bound (StateKind::Accumulating: the
-// energy audit's integrals); the friction bristles are included. Steps h_i:
+// energy audit's integrals) and without discrete modes (StateKind::Discrete: the
+// reduced model's truck mode, held during Newton; an orbit must return to the mode
+// it started in); the friction bristles are included. Steps h_i:
 // positions 10 µm (or 10 µrad), rates 0.1 mm/s, bristles 0.1 µm, as the
 // describing function's twin check, times OrbitSettings::stepScale. The mismatch is measured in the same units
 // except for the bristles, in 1 µm (0.4 % of the wedges' bristle limit): a wedge
@@ -29,12 +31,22 @@
 #include "scenarios/ScenarioRun.h"
 
 #include <Eigen/Dense>
+#include <chrono>
 #include <string>
 #include <vector>
 
 namespace rockroll {
 
+/// How an orbit is found. Newton finds stable and unstable orbits and their
+/// multipliers, and needs a map smooth at the finite-difference steps. Iteration
+/// (y ← P(y) until P(y) − y is within the tolerance) finds only attracting orbits:
+/// for the reduced model, whose fixed 5 ms steps make the map jump where a truck-mode
+/// switch moves by a step (docs/orbits.md).
+enum class OrbitMethod { Newton, Iteration };
+
 struct OrbitSettings {
+    OrbitMethod method = OrbitMethod::Newton;
+    int iterationPeriods = 300; ///< Iteration: the most map evaluations per orbit
     double accuracy = 1e-7;     ///< integrator accuracy of the map (≤ 0: the scenario's)
     ShootingSettings shooting;
     bool tryPeriodTwo = true;   ///< when P's Newton fails, shoot P∘P
@@ -54,7 +66,11 @@ struct PeriodicOrbit {
     double mismatch = 0;              ///< max_i |P^k(x)_i − x_i| / h_i
     double periodOneMismatch = 0;     ///< the same for P alone (period 2: large)
     int iterations = 0, mapEvaluations = 0;
-    Eigen::VectorXcd multipliers;     ///< of P^period at the orbit, by decreasing modulus
+    OrbitMethod method = OrbitMethod::Newton;
+    /// Of P^period at the orbit, by decreasing modulus. Iteration: empty; maxMultiplier is
+    /// then the contraction per period of the last iterates' mismatch (the dominant |μ|) and
+    /// the real multipliers are NaN.
+    Eigen::VectorXcd multipliers;
     Eigen::MatrixXd monodromy;        ///< ∂(P^period)/∂x at the orbit (converged only)
     double maxMultiplier = 0;         ///< |μ|max
     double largestRealMultiplier = 0; ///< the largest real part of a real multiplier (fold: → +1)
@@ -94,13 +110,20 @@ public:
     std::vector<double> toFull(const Eigen::VectorXd& x, const std::vector<double>& like) const;
     Eigen::VectorXd toShooting(const std::vector<double>& y) const;
     const Eigen::VectorXd& getSteps() const { return steps_; }
+    /// Indices of the flat state's discrete modes (StateKind::Discrete): never interpolated.
+    const std::vector<int>& getDiscreteIndices() const { return discrete_; }
 
 private:
     Scenario makeScenario(double speedMph, int periods) const;
+    PeriodicOrbit iterate(double speedMph, const std::vector<double>& guess,
+                          std::chrono::steady_clock::time_point wall0) const;
+    /// The converged orbit's run over its period: summary, roll amplitude, wheel-lift fraction.
+    void describe(PeriodicOrbit& o) const;
     Scenario base_;
     double startDistance_ = 0, trackPeriod_ = 0;
     OrbitSettings settings_;
     std::vector<int> shot_;            ///< indices of y in x
+    std::vector<int> discrete_;        ///< indices of y's discrete modes (StateKind::Discrete)
     size_t stateSize_ = 0;
     Eigen::VectorXd steps_, scales_;
     std::vector<double> staticReference_;  ///< the static state's history row (static loads of the summary)

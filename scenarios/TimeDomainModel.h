@@ -30,7 +30,8 @@ enum class StateKind {
     Position,     ///< a generalized coordinate [m, rad] (quaternion entries included)
     Rate,         ///< a generalized speed [m/s, rad/s]
     Internal,     ///< an element's internal state: a friction bristle's deflection [m, rad]
-    Accumulating  ///< grows without bound over a run (the energy audit's integrals)
+    Accumulating, ///< grows without bound over a run (the energy audit's integrals)
+    Discrete      ///< an enumerated mode stored as a whole number (the reduced model's truck mode)
 };
 
 class TimeDomainModel {
@@ -49,8 +50,7 @@ public:
     virtual RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const = 0;
 
     /// The kind of every entry of the flat state, in its order; empty when the
-    /// state cannot be shot for a periodic orbit (the default; the reduced model's
-    /// state holds its truck's discrete mode).
+    /// state cannot be shot for a periodic orbit (the default).
     virtual std::vector<StateKind> getStateKinds() const { return {}; }
 };
 

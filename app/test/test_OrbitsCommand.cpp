@@ -56,10 +56,25 @@ TEST(OrbitsCommand, RefusesATrackThatDoesNotRepeat) {
     EXPECT_NE(r.err.find("rails"), std::string::npos) << r.err;
 }
 
-TEST(OrbitsCommand, RefusesTheReducedModel) {
+// --iterate finds each orbit by iterating the map; orbits.json says so and leaves the
+// multipliers it does not compute empty (the reduced model, light rocking at 0.25 in).
+TEST(OrbitsCommand, IteratesTheReducedModel) {
     const auto dir = makeTestTempDir();
-    const CliOutcome r = runRockroll(dir, "orbits " + kScenario + " --model reduced --from-mph 12 --to-mph 11");
-    EXPECT_EQ(r.exitCode, 2) << r.err;
+    const CliOutcome r = runRockroll(dir, "orbits " + kScenario +
+                                              " --model reduced --amplitude-in 0.25 --from-mph 12 --to-mph 11.5 "
+                                              "--step-mph 0.5 --start-duration-s 20 --settle-periods 5 --iterate --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["orbit_method"], "iteration");
+    EXPECT_EQ(j["settle_periods"], 5);
+    ASSERT_EQ(j["points"].size(), 2u);
+    for (const auto& p : j["points"]) {
+        EXPECT_TRUE(p["converged"].get<bool>()) << p.dump();
+        EXPECT_TRUE(p["stable"].get<bool>());
+        EXPECT_TRUE(p["largest_real_multiplier"].is_null());
+        EXPECT_TRUE(p["multipliers"].empty());
+        EXPECT_LT(p["max_multiplier"].get<double>(), 1.0);
+    }
 }
 
 // --start-sweep-from-mph: the first shooting starts from the end of a speed sweep that

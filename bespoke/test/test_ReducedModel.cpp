@@ -322,3 +322,42 @@ TEST(ReducedModel, PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch) {
     EXPECT_EQ(pruned.solves + pruned.skipped, exhaustive.solves);
     EXPECT_GT(pruned.skipped, exhaustive.solves / 10);  // the bounds save real work
 }
+
+// A duration that is not a whole number of 5 ms steps ends with one shorter step, at
+// the duration exactly; the whole steps before it are the same steps, bit for bit.
+TEST(ReducedModel, ARunEndsAtItsDurationWithOneShorterStep) {
+    // Cross-level rocking at 1.5 Hz, 0.25 in.
+    const ReducedHalfCarModel m(getCar(), [](double t) {
+        const double w = 2 * M_PI * 1.5, a = 0.25 * units::inch * std::sin(w * t), v = 0.25 * units::inch * w * std::cos(w * t);
+        return RailState{{a, -a}, {v, -v}};
+    });
+    const RunResult whole = simulateReduced(m, 1.0);
+    const RunResult longer = simulateReduced(m, 1.0 + 0.0013);
+    ASSERT_EQ(whole.history.samples.size(), 201u);
+    ASSERT_EQ(longer.history.samples.size(), 202u);
+    EXPECT_DOUBLE_EQ(longer.simTime, 1.0013);
+    EXPECT_DOUBLE_EQ(longer.history.samples.back()[0], 1.0013);
+    for (size_t i = 0; i < whole.history.samples.size(); ++i) EXPECT_EQ(whole.history.samples[i], longer.history.samples[i]);
+    // The short step moves the state by about its share of a step, not a whole step.
+    const double rollStep = longer.finalState[0] - whole.finalState[0];
+    EXPECT_LT(std::abs(rollStep), std::abs(whole.finalState[3]) * 0.0013 * 1.5 + 1e-12);
+    EXPECT_GT(std::abs(rollStep), 0.0);
+}
+
+// A state whose truck-mode entries are not whole numbers in their enumerations' ranges
+// is refused by name, never cast into an invalid mode.
+TEST(ReducedModel, AStateWithAnInvalidTruckModeIsRefused) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    std::vector<double> y = m.calcStaticState();
+    for (double bad : {0.5, -1.0, 8.0}) {
+        std::vector<double> z = y;
+        z[6] = bad;
+        try {
+            simulateReduced(m, 0.01, nullptr, z);
+            ADD_FAILURE() << "accepted " << bad;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("truck-mode enumeration"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_NO_THROW(simulateReduced(m, 0.01, nullptr, y));
+}

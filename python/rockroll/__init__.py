@@ -219,20 +219,24 @@ def steady(scenario, from_mph=10, to_mph=22, amplitude_in=None, stability="fold"
 
 
 def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0.25, start_duration_s=30,
-           start_sweep_from_mph=None, start_speed_ramp_s=1.0, accuracy=1e-7, refinements=2, newton_steps=20, fd_step_scale=1.0,
-           jobs=0):
+           start_sweep_from_mph=None, start_speed_ramp_s=1.0, accuracy=1e-7, refinements=2, newton_steps=20, settle_periods=0,
+           iterate=False, fd_step_scale=1.0, jobs=0):
     """Periodic orbits of a time-domain model continued in speed, like `rockroll orbits --json`
     (docs/orbits.md): a dict with ``start``, ``points`` (one per orbit point computed, failed
     ones with ``converged`` False and their ``failure``), ``events``, ``stop_reason`` and
     ``provenance``. The start is a run from rest at from_mph (``start_duration_s``), or a
-    speed sweep from ``start_sweep_from_mph`` to from_mph in step_mph steps."""
+    speed sweep from ``start_sweep_from_mph`` to from_mph in step_mph steps, then
+    ``settle_periods`` forcing periods at from_mph before the first shooting. ``iterate``:
+    each orbit by iterating the map (attracting orbits only), as ``--iterate``."""
     sc = _scenario(scenario)
     for name, v, lo, hi in (("refinements", refinements, 0, 8), ("newton_steps", newton_steps, 1, 100),
-                            ("jobs", jobs, 0, 1024)):
+                            ("settle_periods", settle_periods, 0, 1000), ("jobs", jobs, 0, 1024)):
         if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
             raise ValueError(f"{name} = {v!r}: expected an integer in [{lo}, {hi}]")
     if not 1e-12 <= float(accuracy) <= 1e-3:
         raise ValueError(f"accuracy = {accuracy!r}: expected a number in [1e-12, 1e-3]")
+    if not isinstance(iterate, bool):
+        raise ValueError(f"iterate = {iterate!r}: expected True or False")
     if not 0.01 <= float(fd_step_scale) <= 100:
         raise ValueError(f"fd_step_scale = {fd_step_scale!r}: expected a number in [0.01, 100]")
     if not 0 <= float(start_speed_ramp_s) <= 60:
@@ -244,14 +248,14 @@ def orbits(scenario, from_mph, to_mph, model=None, amplitude_in=None, step_mph=0
                     step_mph=step_mph, start_duration_s=start_duration_s,
                     start_sweep_from_mph=start_sweep_from_mph, start_speed_ramp_s=start_speed_ramp_s,
                     accuracy=accuracy, refinements=refinements, newton_steps=newton_steps,
-                    fd_step_scale=fd_step_scale, jobs=jobs)
+                    settle_periods=settle_periods, iterate=iterate, fd_step_scale=fd_step_scale, jobs=jobs)
     return _rockroll._orbits(sc, model, None if amplitude_in is None else _positive("amplitude_in", amplitude_in),
                              _positive("from_mph", from_mph), _positive("to_mph", to_mph),
                              _positive("step_mph", step_mph), _positive("start_duration_s", start_duration_s),
                              None if start_sweep_from_mph is None else _positive("start_sweep_from_mph",
                                                                                 start_sweep_from_mph),
                              float(start_speed_ramp_s), float(accuracy), refinements, newton_steps,
-                             float(fd_step_scale), jobs, command)
+                             settle_periods, bool(iterate), float(fd_step_scale), jobs, command)
 
 
 def modes(scenario, model=None):

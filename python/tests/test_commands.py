@@ -58,8 +58,10 @@ def test_orbits_is_the_command_lines(cli_json):
     assert strip(result) == strip(expected)
     assert [p["roll_amplitude_deg"] for p in result["points"]] == [p["roll_amplitude_deg"] for p in expected["points"]]
     assert [p["speed_mph"] for p in result["points"]] == [12, 11.75]
-    with pytest.raises(rockroll.ScenarioError, match="state cannot be shot"):
-        rockroll.orbits(LOADED, model="reduced", from_mph=12, to_mph=11)
+    with pytest.raises(ValueError, match="iterate"):
+        rockroll.orbits(LOADED, model="reduced", from_mph=12, to_mph=11, iterate="yes")
+    with pytest.raises(ValueError, match="settle_periods"):
+        rockroll.orbits(LOADED, from_mph=12, to_mph=11, settle_periods=-1)
     with pytest.raises(ValueError, match="start_speed_ramp_s"):
         rockroll.orbits(LOADED, from_mph=12, to_mph=11, start_speed_ramp_s=0)
     with pytest.raises(ValueError, match="newton_steps"):

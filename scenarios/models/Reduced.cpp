@@ -18,6 +18,19 @@ public:
         return simulateReduced(model_, sc.run.duration, nullptr, y0, resolveRunLimits(sc.run.limits, sc.car));
     }
 
+    /// The flat layout of ReducedHalfCarModel::calcStaticState: [θ, y, z], their rates,
+    /// the truck mode (8 enumerations), then the truck's memory: spring compressions
+    /// and the lateral deflection at the last step (they pick a slip direction), the
+    /// wedge anchors (bristle-like: the stuck force is k_b·(Z − Z_a)) and the truck's
+    /// two roll angles.
+    std::vector<StateKind> getStateKinds() const override {
+        std::vector<StateKind> kinds(6, StateKind::Position);
+        for (int i = 3; i < 6; ++i) kinds[size_t(i)] = StateKind::Rate;
+        kinds.insert(kinds.end(), 8, StateKind::Discrete);
+        kinds.insert(kinds.end(), 8, StateKind::Internal);
+        return kinds;
+    }
+
 private:
     ReducedHalfCarModel model_;
 };

@@ -1,6 +1,7 @@
 // Periodic orbits by shooting (scenarios/PeriodicOrbit.h) on the eom half car, the
 // fastest model: 70-ton loaded, 0.25 in, 12 mph, a light-rocking orbit.
 #include "scenarios/PeriodicOrbit.h"
+#include "scenarios/OrbitContinuation.h"
 
 #include "mbmodel/Units.h"
 #include "scenarios/ModelRegistry.h"
@@ -96,8 +97,57 @@ TEST(PeriodicOrbit, RefusesATrackThatDoesNotRepeat) {
     EXPECT_THROW(PeriodicOrbitSolver::calcTrackPeriod(sc), ScenarioError);
     sc.track.rails = 0;
     EXPECT_DOUBLE_EQ(PeriodicOrbitSolver::calcTrackPeriod(sc), sc.track.railLength);
+}
+
+// The reduced model: its truck mode is held during Newton and never interpolated; an
+// orbit returns to the mode it started in. Newton and iteration (y ← P(y)) find the
+// same light-rocking orbit (0.25 in, 12 mph), and a continuation step by iteration
+// keeps the mode entries whole numbers (the secant predictor leaves them alone).
+TEST(PeriodicOrbit, TheReducedModelIsShotByNewtonAndByIteration) {
+    Scenario sc = makeLightScenario();
     sc.model = model_names::kReduced;
-    EXPECT_THROW(PeriodicOrbitSolver(sc, 100.0), ScenarioError);
+    Scenario s = sc;
+    s.run.duration = 20;
+    const ScenarioRun start = runScenario(s);
+    const PeriodicOrbitSolver newton(sc, start.restart.distance);
+    OrbitSettings it;
+    it.method = OrbitMethod::Iteration;
+    const PeriodicOrbitSolver iteration(sc, start.restart.distance, it);
+    // Ten periods on from the run's end: Newton's finite-difference monodromy needs a start near the orbit.
+    const std::vector<double> settled = newton.runPeriods(12, start.restart.y, 10).restart.y;
+    const PeriodicOrbit a = newton.solve(12, settled), b = iteration.solve(12, start.restart.y);
+    ASSERT_TRUE(a.converged) << a.failure;
+    ASSERT_TRUE(b.converged) << b.failure;
+    EXPECT_EQ(a.period, 1);
+    EXPECT_EQ(b.period, 1);
+    EXPECT_EQ(b.method, OrbitMethod::Iteration);
+    EXPECT_TRUE(b.stable);
+    EXPECT_EQ(b.multipliers.size(), 0);
+    EXPECT_TRUE(std::isnan(b.largestRealMultiplier));
+    EXPECT_GT(b.maxMultiplier, 0.0);
+    EXPECT_LT(b.maxMultiplier, 1.0);
+    EXPECT_NEAR(a.rollAmplitudeDeg, b.rollAmplitudeDeg, 1e-3 * a.rollAmplitudeDeg);
+    // One more period from either orbit: the same truck mode, the state back within the tolerance.
+    for (const PeriodicOrbit* o : {&a, &b}) {
+        const std::vector<double> back = newton.runPeriods(12, o->y, 1).restart.y;
+        for (int i : newton.getDiscreteIndices()) EXPECT_EQ(back[size_t(i)], o->y[size_t(i)]) << i;
+        const Eigen::VectorXd d = newton.toShooting(back) - newton.toShooting(o->y);
+        for (Eigen::Index i = 0; i < d.size(); ++i) {
+            const double scale = newton.getSteps()[i] == 1e-7 ? 1e-6 : newton.getSteps()[i];
+            EXPECT_LT(std::abs(d[i]) / scale, 5) << "coordinate " << i;
+        }
+    }
+    EXPECT_EQ(newton.getDiscreteIndices().size(), 8u);
+
+    OrbitContinuationSettings cs;
+    cs.fromMph = 12, cs.toMph = 11.5, cs.stepMph = 0.25;
+    const OrbitBranch br = OrbitContinuation(iteration, cs).trace(start.restart.y);
+    ASSERT_EQ(br.points.size(), 3u);
+    for (const PeriodicOrbit& p : br.points) {
+        EXPECT_TRUE(p.converged) << p.speedMph << ": " << p.failure;
+        for (int i : iteration.getDiscreteIndices()) EXPECT_EQ(p.y[size_t(i)], std::floor(p.y[size_t(i)]));
+    }
+    EXPECT_EQ(br.stopReason, "minimum speed reached");
 }
 
 // --fd-step-scale scales the finite-difference steps and nothing else: the mismatch of a
