@@ -47,9 +47,16 @@ struct OrbitCaseResult {
     /// after which the run ends off the branch; NaN: none of them; −1: no step tried (no
     /// orbit at any new speed to compare with).
     std::vector<std::pair<double, double>> basin;
+    /// The reduced model: from each state of section 2's down sweep, from the start speed
+    /// down to its drop, the map iterated (OrbitMethod::Iteration): what it settles on.
+    std::vector<PeriodicOrbit> settled;
+    std::vector<double> settledSweepAmplitude;  ///< the sweep's steady roll amplitude there [deg]
 };
 
 const std::vector<double> kBasinSteps{0.5, 1.0, 2.0};
+
+/// Iteration leaves the real multipliers undefined (NaN): an empty cell.
+CsvCell fixedOrEmpty(double x) { return std::isfinite(x) ? CsvCell::fixed(x, 4) : CsvCell::empty(); }
 
 /// The branch's converged orbits, in speed order (descending).
 std::vector<const PeriodicOrbit*> convergedOrbits(const OrbitBranch& b) {
@@ -82,6 +89,32 @@ std::string describeEnd(const OrbitCaseResult& r) {
                            b.endBracketMph->first, b.stopReason);
     if (b.stopReason == "no orbit at the start speed") return "no orbit at the start speed: " + b.points.front().failure;
     return fmt::format("no fold down to {:g} mph", r.c.toMph);
+}
+
+/// One down-sweep state iterated: what it settles on, against the sweep's own steady amplitude.
+std::string describeSettledPoint(const PeriodicOrbit& o, double sweepDeg) {
+    if (!o.converged) return fmt::format("none in {} periods (sweep {:.2f}°)", o.mapEvaluations, sweepDeg);
+    const bool same = std::abs(o.rollAmplitudeDeg - sweepDeg) <= kOnBranchFraction * sweepDeg;
+    return fmt::format("period {}, {:.2f}° after {} periods (sweep {:.2f}°: {})", o.period, o.rollAmplitudeDeg,
+                       o.mapEvaluations, sweepDeg, same ? "its orbit" : "another orbit");
+}
+
+/// The reduced model's down-sweep states iterated, counted: on an orbit of their own amplitude,
+/// settling on another one, or on none within the iteration limit.
+std::string describeSettled(const OrbitCaseResult& r) {
+    if (r.settled.empty()) return "no down-sweep state iterated";
+    int own = 0, other = 0, none = 0;
+    for (size_t i = 0; i < r.settled.size(); ++i) {
+        const PeriodicOrbit& o = r.settled[i];
+        if (!o.converged) ++none;
+        else if (std::abs(o.rollAmplitudeDeg - r.settledSweepAmplitude[i]) <= kOnBranchFraction * r.settledSweepAmplitude[i])
+            ++own;
+        else ++other;
+    }
+    return fmt::format("of its down-sweep states from {:g} to {:g} mph, iterated at their own speed: {} on a period-1 or "
+                       "-2 orbit of their amplitude, {} settle onto another orbit, {} on none within the limit (the table "
+                       "below)",
+                       r.settled.front().speedMph, r.settled.back().speedMph, own, other, none);
 }
 
 std::string describeBasin(double dv) {
@@ -125,6 +158,8 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
         for (const auto& [amp, v0] : std::vector<std::pair<double, double>>{{0.5, 16}, {0.75, 14}, {1.0, 14}}) {
             cases.push_back({"70ton-loaded", amp, model_names::kEom, v0, 0.5});
             cases.push_back({"70ton-loaded", amp, model_names::kHalfCar, v0, 1.0});
+            // Found by iteration (docs/orbits.md, "Iteration"): its map jumps at the finite-difference steps.
+            cases.push_back({"70ton-loaded", amp, model_names::kReduced, amp == 0.5 ? 16.0 : 18.0, 0.5});
         }
         // The empty car's drop (section 2: 26 → 25.5 mph), its branch down to the lowest speed swept.
         cases.push_back({"70ton-empty", 0.75, model_names::kEom, 27, 0.5, 24});
@@ -172,12 +207,26 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             OrbitSettings os;
             os.shooting.threads = 1;  // the cases run in parallel; the bits do not depend on it
             os.shooting.maxIterations = 20;
+            const bool reduced = r.c.model == model_names::kReduced;
+            if (reduced) os.method = OrbitMethod::Iteration;
             const PeriodicOrbitSolver solver(sc, from->distance, os);
+            if (reduced && sw) {
+                // Each down-sweep state from the start speed to the drop, iterated at its own speed.
+                for (const auto& p : sw->down) {
+                    if (p.speedMph > r.c.startMph + 1e-9 || p.failed || !p.next.from) continue;
+                    if (std::isfinite(r.sweepDropMph) && p.speedMph < r.sweepDropMph - 1e-9) break;
+                    if (!std::isfinite(r.sweepDropMph) && p.speedMph < r.c.startMph - 4 + 1e-9) break;
+                    const PeriodicOrbitSolver at(sc, p.next.from->distance, os);
+                    r.settled.push_back(at.solve(p.speedMph, p.next.from->y));
+                    r.settledSweepAmplitude.push_back(p.summary.steadyRollAmplitudeDeg);
+                }
+            }
             OrbitContinuationSettings cs;
             cs.fromMph = r.c.startMph;
             cs.toMph = r.c.toMph;
             cs.stepMph = r.c.stepMph;
-            cs.refinements = r.c.model == model_names::kEom ? 2 : 1;
+            cs.refinements = r.c.model == model_names::kHalfCar ? 1 : 2;
+            cs.branchNewtonSteps = 10;
             r.branch = OrbitContinuation(solver, cs).trace(from->y);
             if (r.c.model != model_names::kEom) return;
             // The basin along the branch: from each orbit, the speed stepped down at once by Δ.
@@ -245,8 +294,8 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             for (const auto& p : r.branch.points)
                 if (p.converged)
                     csv.writeRow({CsvCell::fixed(p.speedMph, 4), 1, p.period, CsvCell::fixed(p.rollAmplitudeDeg, 4),
-                                  CsvCell::fixed(p.wheelLiftFraction, 4), CsvCell::fixed(p.maxMultiplier, 4),
-                                  CsvCell::fixed(p.largestRealMultiplier, 4), CsvCell::fixed(p.smallestRealMultiplier, 4),
+                                  CsvCell::fixed(p.wheelLiftFraction, 4), fixedOrEmpty(p.maxMultiplier),
+                                  fixedOrEmpty(p.largestRealMultiplier), fixedOrEmpty(p.smallestRealMultiplier),
                                   p.stable ? "yes" : "no"});
                 else
                     csv.writeRow({CsvCell::fixed(p.speedMph, 4), 0, 0, "", "", "", "", "", ""});
@@ -259,9 +308,11 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
     md += fmt::format(
         "Made like `rockroll orbits scenarios/<car>.toml --model M --amplitude-in A --from-mph V0 --to-mph V1 "
         "--step-mph S` (docs/orbits.md), except that the first shooting starts from {}. Shooting on the one-period map "
-        "at accuracy 1e-7, up to 20 Newton steps (on P, then on P∘P), each shooting after the first a chord Newton from "
-        "the previous orbit's monodromy, step halved twice at a failure (eom; the half car once); stable when |μ|max ≤ "
-        "1.01 (a sticking wedge's neutral multiplier). A branch ends at a fold when its last orbit's largest real "
+        "at accuracy 1e-7, up to 20 Newton steps for the first orbit and 10 for each after it (on P, then on P∘P), each "
+        "shooting after the first a chord Newton from the previous orbit's monodromy, step halved twice at a failure (eom and reduced; the half car once); stable when "
+        "|μ|max ≤ 1.01 (a sticking wedge's neutral multiplier). The reduced model's orbits are found by iterating the map "
+        "(`--iterate`, at most 300 periods: attracting orbits only, |μ|max the contraction per period, its ends not told "
+        "fold from loss of stability), since its fixed 5 ms steps make the map jump at the finite-difference steps. A branch ends at a fold when its last orbit's largest real "
         "multiplier is near +1 or a real multiplier crossed +1 between its last two orbits. Data "
         "`orbits_<car>_<A>in_<model>.csv`; the 70-ton loaded car's orbits are drawn on the describing-function plots of "
         "section 5 (`steady_70ton-loaded_<A>in.png`). The down sweep's drop (section 2: 0.5 mph steps, 30 s a speed, the "
@@ -366,19 +417,13 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             if (b) {
                 beside = fmt::format("{} ({})", b->c.model, describeEnd(*b));
                 verdict = describeDropBeside(drop, *b);
-            } else if (sw.model == model_names::kReduced) {
-                beside = "none: the reduced model's state holds its truck's discrete mode and is not shot "
-                         "(docs/orbits.md); no eom branch on this case";
-                verdict = "not explained here";
             } else {
                 beside = "none computed on this case";
                 verdict = "not explained here";
             }
             if (b && b != own)
-                beside += sw.model == model_names::kReduced
-                              ? "; the reduced model's own state holds a discrete truck mode and is not shot, so this "
-                                "is the detailed equations' branch, not the reduced model's"
-                              : fmt::format("; {}'s own orbits are not computed in validate (docs/orbits.md)", sw.model);
+                beside += fmt::format("; {}'s own orbits are not computed in validate (docs/orbits.md)", sw.model);
+            if (own && sw.model == model_names::kReduced) verdict += "; " + describeSettled(*own);
             md += fmt::format("| {} | {:.2f} | {} | {:.1f} | {} | {} |\n", sw.c.car, sw.c.amplitudeIn, sw.model, drop,
                               beside, verdict);
         }
@@ -419,6 +464,25 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             cells.push_back(fmt::format("{:g}: {}", v, describeBasin(dv)));
         md += fmt::format("| {} | {:.2f} | {} |\n", r.c.car, r.c.amplitudeIn,
                           cells.empty() ? "—" : fmt::format("{}", fmt::join(cells, "; ")));
+    }
+
+    // The reduced model's down-sweep states, iterated.
+    bool anySettled = false;
+    for (const auto& r : results) anySettled = anySettled || !r.settled.empty();
+    if (anySettled) {
+        md += "\n**What the reduced model's down-sweep states settle on.** From section 2's down-sweep state at each "
+              "speed, from V0 down to its drop (or 4 mph below V0 when it never drops), the one-period map iterated at "
+              "that speed until it repeats after 1 or 2 periods within the shooting tolerance, at most 300 periods: "
+              "the orbit it settles on, beside the sweep's steady roll amplitude there (\"its orbit\" when within "
+              "30 %).\n\n| car | A, in | speed mph: what the state settles on |\n|---|---|---|\n";
+        for (const auto& r : results) {
+            if (r.settled.empty()) continue;
+            std::vector<std::string> cells;
+            for (size_t i = 0; i < r.settled.size(); ++i)
+                cells.push_back(fmt::format("{:g}: {}", r.settled[i].speedMph,
+                                            describeSettledPoint(r.settled[i], r.settledSweepAmplitude[i])));
+            md += fmt::format("| {} | {:.2f} | {} |\n", r.c.car, r.c.amplitudeIn, fmt::join(cells, "; "));
+        }
     }
 
     // Stepped sweeps.
@@ -517,6 +581,11 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                                                 st.stepMph,
                                                 std::isfinite(st.dropMph) ? fmt::format("drops at {:.1f} mph", st.dropMph)
                                                                           : "never drops");
+            for (const auto& red : results)
+                if (red.c.model == model_names::kReduced && red.c.amplitudeIn == 1.0)
+                    foldSentence += fmt::format(" The reduced model at 1.0 in, by iteration from its down sweep's state at "
+                                                "{:g} mph: {}; {}.",
+                                                red.c.startMph, describeEnd(red), describeSettled(red));
             foldSentence += " The report computed its points \"from initial conditions of lower speed ... as well as "
                             "from higher speed\" (§3.2) and does not say how the speed changed between them; what made "
                             "its simulation leave the branch at 13.5 mph is not measured here.\n";

@@ -60,7 +60,8 @@ OrbitBranch OrbitContinuation::trace(const std::vector<double>& start,
             for (int i : solver_.getDiscreteIndices()) guess[size_t(i)] = cur.y[size_t(i)];
         }
         const bool reuse = settings_.reuseMonodromy && cur.period == 1;
-        PeriodicOrbit o = solver_.solve(next, guess, reuse ? cur.monodromy : Eigen::MatrixXd());
+        PeriodicOrbit o =
+            solver_.solve(next, guess, reuse ? cur.monodromy : Eigen::MatrixXd(), settings_.branchNewtonSteps);
         bool accepted = o.converged;
         if (accepted) {
             const double jump = std::abs(o.rollAmplitudeDeg - cur.rollAmplitudeDeg);

@@ -40,6 +40,10 @@ struct OrbitContinuationSettings {
     /// stable orbit's basin pulls the start closer, for a map whose finite-difference
     /// monodromy is poor far from the orbit (the reduced model's piecewise truck, docs/orbits.md).
     int settlePeriods = 0;
+    /// Fresh-monodromy Newton steps for each orbit after the first (0: the solver's own). From
+    /// the predictor and the previous monodromy a converging orbit needs few; a failing one
+    /// spends them all, on P and again on P∘P.
+    int branchNewtonSteps = 0;
 };
 
 struct OrbitEvent {

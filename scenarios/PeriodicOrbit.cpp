@@ -109,7 +109,9 @@ Eigen::VectorXd PeriodicOrbitSolver::toShooting(const std::vector<double>& y) co
 }
 
 PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<double>& guess,
-                                         const Eigen::MatrixXd& startMonodromy) const {
+                                         const Eigen::MatrixXd& startMonodromy, int maxNewtonSteps) const {
+    ShootingSettings shooting = settings_.shooting;
+    if (maxNewtonSteps > 0) shooting.maxIterations = maxNewtonSteps;
     const auto wall0 = std::chrono::steady_clock::now();
     PeriodicOrbit o;
     o.speedMph = speedMph;
@@ -122,11 +124,11 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
     };
     const Eigen::VectorXd x0 = toShooting(guess);
     if (settings_.method == OrbitMethod::Iteration) return iterate(speedMph, guess, wall0);
-    ShootingResult r = PeriodicShooting(mapOf(1), steps_, settings_.shooting, scales_).solve(x0, startMonodromy);
+    ShootingResult r = PeriodicShooting(mapOf(1), steps_, shooting, scales_).solve(x0, startMonodromy);
     o.mapEvaluations = r.mapEvaluations;
     int period = 1;
     if (!r.converged && settings_.tryPeriodTwo) {
-        ShootingResult r2 = PeriodicShooting(mapOf(2), steps_, settings_.shooting, scales_).solve(x0);
+        ShootingResult r2 = PeriodicShooting(mapOf(2), steps_, shooting, scales_).solve(x0);
         o.mapEvaluations += r2.mapEvaluations;
         if (r2.converged) {
             r = std::move(r2);
@@ -151,7 +153,7 @@ PeriodicOrbit PeriodicOrbitSolver::solve(double speedMph, const std::vector<doub
         }
         for (int i : discrete_) like[size_t(i)] = end[size_t(i)];
         const int evaluations = o.mapEvaluations;
-        r = PeriodicShooting(mapOf(period), steps_, settings_.shooting, scales_).solve(r.x, r.monodromy);
+        r = PeriodicShooting(mapOf(period), steps_, shooting, scales_).solve(r.x, r.monodromy);
         o.mapEvaluations = evaluations + r.mapEvaluations;
     }
     o.y = toFull(r.x, like);

@@ -101,8 +101,9 @@ public:
 
     /// Shoots from the model's flat state `guess` at speedMph. startMonodromy: a neighbouring
     /// period-1 orbit's ∂P/∂x, to start a chord Newton on P with (PeriodicShooting.h; empty: none).
-    PeriodicOrbit solve(double speedMph, const std::vector<double>& guess,
-                        const Eigen::MatrixXd& startMonodromy = {}) const;
+    /// maxNewtonSteps > 0 replaces settings.shooting.maxIterations for this orbit.
+    PeriodicOrbit solve(double speedMph, const std::vector<double>& guess, const Eigen::MatrixXd& startMonodromy = {},
+                        int maxNewtonSteps = 0) const;
     /// The model's run over `periods` forcing periods from y at s₀ (NumericalFailure
     /// when it fails, or a run limit stops it).
     ScenarioRun runPeriods(double speedMph, const std::vector<double>& y, int periods) const;

@@ -116,12 +116,12 @@ def plot_steady(out, meta):
                          "steady_roll_amplitude_deg", marker=marker, linestyle="none", color=f"C{k}",
                          label=f"{s['model']} sweep {direction}")
         # Periodic orbits of the time-domain models (section 11), filled where stable.
-        for k, orb in enumerate(o for o in meta.get("orbits", []) if o["key"] == st["sweep_key"]):
+        for orb in (o for o in meta.get("orbits", []) if o["key"] == st["sweep_key"]):
             _, orows = read_csv(os.path.join(out, orb["file"]))
-            marker = "o" if orb["model"] == "eom" else "s"
+            marker, color = {"eom": ("o", "C3"), "halfcar": ("s", "C4")}.get(orb["model"], ("D", "C5"))
             for stable, fill in (("yes", "full"), ("no", "none")):
                 plot_csv(ax, orb["file"], orows, {"converged": "1", "stable": stable}, "speed_mph",
-                         "roll_amplitude_deg", marker=marker, linestyle="none", color="C3" if k % 2 == 0 else "C4",
+                         "roll_amplitude_deg", marker=marker, linestyle="none", color=color,
                          fillstyle=fill, markersize=5,
                          label=f"{orb['model']} periodic orbit, {'stable' if stable == 'yes' else 'unstable'}")
         # Figure 31 holds every amplitude; Figure 34 compares the 0.75 in case alone (report §4.3).
