@@ -248,29 +248,27 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     const double last = duration - double(n) * h;
     const long total = last > 1e-9 * h ? n + 1 : n;
     long k = 0;
-    double t = 0;
     for (; k < total && !result.stop; ++k) {
-        const double dt = k < n ? h : last;
+        const double t = double(k) * h, dt = k < n ? h : last;
         const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + dt / 2, y + dt / 2 * e1.derivative, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + dt / 2, y + dt / 2 * e2.derivative, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + dt, y + dt * e3.derivative, mem, &st.modes);
         y += dt / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
         energy[0] += dt / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
-        const double tNext = k < n ? double(k + 1) * h : duration;
+        const double tNext = k < n ? t + h : duration;
         if (!y.allFinite()) {
             throw NumericalFailure(fmt::format(
                 "reduced model: state became non-finite at t = {:.4f} s (truck mode: {})\nroll {} rad, y {} m, z {} m",
                 tNext, mem.mode.describe(), y[0], y[1], y[2]), tNext);
         }
         guard.check(accept(tNext), result);
-        t = tNext;
         ++st.steps;
     }
     result.steps = st.steps;
     result.finalState = flatten(y, mem);
     result.realizations = 4 * st.steps + st.steps + 1;
-    result.simTime = t;
+    result.simTime = k > n ? duration : double(k) * h;
     result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     if (stats) *stats = st;
     return result;

@@ -1,4 +1,5 @@
 #include "scenarios/ScenarioLoader.h"
+#include "scenarios/ScenarioSchema.h"
 #include "scenarios/TomlInput.h"
 
 #include "scenarios/ModelRegistry.h"
@@ -26,37 +27,14 @@ double getUnitFactor(units::Dimension dim, std::string_view unit) {
     return dim == units::Dimension::Dimensionless ? 1.0 : units::parseQuantity(fmt::format("1 {}", unit), dim);
 }
 
-/// The one table of accepted ranges [SI]. The cross-level amplitude limit, 3 in, is
-/// four times the largest amplitude the 1976 report studies (0.75 in; 1 in in Table 3).
-/// Duration, output rate and accuracy are bounded so that no run waits forever.
+/// The accepted ranges [SI]: the schema's numbers (scenarios/ScenarioSchema.h), then the
+/// car parameters: finite, and positive unless zero means something (no clearance, no damping).
 std::vector<ValueRange> makeValueRanges() {
-    using units::Dimension;
     constexpr double inf = std::numeric_limits<double>::infinity();
-    std::vector<ValueRange> r{
-        {"track.amplitude", Dimension::Length, 0, 3 * units::inch, false, false, "in"},
-        {"track.rail_length", Dimension::Length, 1, 100, false, false, "m"},
-        {"track.rails", Dimension::Dimensionless, 0, 1e5, false, false, "", true},
-        {"run.speed", Dimension::Speed, 0.1 * units::mph, 150 * units::mph, false, false, "mph"},
-        {"run.duration", Dimension::Time, 0.05, 3600, false, false, "s"},
-        {"run.output_rate", Dimension::Frequency, 1, 1e5, false, false, "Hz"},
-        {"run.filter_cutoff", Dimension::Frequency, 0, 5e4, true, true, "Hz"},
-        {"integrator.accuracy", Dimension::Dimensionless, 1e-10, 1e-1, false, false, ""},
-        {"integrator.max_step", Dimension::Time, 0, 1, false, false, "s"},
-        {"limits.flange_height", Dimension::Length, 0, 3 * units::inch, true, false, "in"},
-        {"limits.flange_clearance", Dimension::Length, 0, 3 * units::inch, false, false, "in"},
-        {"limits.wheels_off_time", Dimension::Time, 0, 10, true, false, "s"},
-        {"limits.rollover_angle", Dimension::Angle, 0, 90 * units::degree, true, false, "deg"},
-        {"limits.energy_runaway_fraction", Dimension::Dimensionless, 0, 100, true, false, ""},
-        {"limits.max_wall_time", Dimension::Time, 0, 7 * 86400, true, false, "s"},
-        {"limits.severe_separation", Dimension::Time, 0, 1, false, false, "s"},
-        {"attribution.truck_mass_scale", Dimension::Dimensionless, 0.001, 1, false, false, ""},
-        {"criteria.roll_peak_to_peak", Dimension::Angle, 0, 90 * units::degree, true, false, "deg"},
-        {"criteria.wheel_unloading", Dimension::Dimensionless, 0, 1, true, false, ""},
-        {"criteria.l_over_v", Dimension::Dimensionless, 0, 10, true, false, ""},
-        {"criteria.car_body_vertical_accel_g", Dimension::Dimensionless, 0, 10, true, false, ""},
-        {"criteria.car_body_lateral_accel_g", Dimension::Dimensionless, 0, 10, true, false, ""},
-    };
-    // Car parameters: finite, and positive unless zero means something (no clearance, no damping).
+    std::vector<ValueRange> r;
+    for (const ScenarioField& f : getScenarioSchema())
+        if (f.kind == FieldKind::Quantity || f.kind == FieldKind::Integer)
+            r.push_back({f.key, f.dimension, f.low, f.high, f.lowOpen, f.highOpen, f.unit, f.kind == FieldKind::Integer});
     for (const CarParameterInfo& info : getCarParameterTable())
         r.push_back({std::string("car.") + info.key, info.dimension, 0, inf, !info.mayBeZero, true, info.displayUnit,
                      info.integer});
@@ -127,35 +105,17 @@ void checkScenario(const Scenario& sc) {
     };
     for (const CarParameterInfo& info : getCarParameterTable())
         check(std::string("car.") + info.key, sc.car.*(info.member));
-    check("track.amplitude", sc.track.amplitude);
-    check("track.rail_length", sc.track.railLength);
-    check("track.rails", sc.track.rails);
-    check("run.speed", sc.speed);
-    check("run.duration", sc.run.duration);
-    check("run.output_rate", sc.run.outputRate);
-    check("run.filter_cutoff", sc.filterCutoffHz);
+    for (const ScenarioField& f : getScenarioSchema()) {
+        if (f.kind != FieldKind::Quantity && f.kind != FieldKind::Integer) continue;
+        const double v = f.getNumber(sc);
+        if (f.zeroIsDerived && v == 0) continue;
+        check(f.key, v);
+    }
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
         throw ScenarioError(fmt::format("{}: key 'run.filter_cutoff' = {} Hz: expected a cut-off below the Nyquist "
                                         "frequency, half the output rate ({} Hz)",
                                         sc.source, sc.filterCutoffHz, sc.run.outputRate / 2));
     checkSampleCount(sc.source, sc.run.duration, sc.run.outputRate);
-    check("integrator.accuracy", sc.run.integrator.accuracy);
-    check("integrator.max_step", sc.run.integrator.maxStepSize);
-    const RunLimits& l = sc.run.limits;
-    check("limits.flange_height", l.flangeHeight);
-    check("limits.flange_clearance", l.flangeClearance);
-    if (l.wheelsOffTime != 0) check("limits.wheels_off_time", l.wheelsOffTime);  // 0: from the flange height
-    if (l.rolloverAngle != 0) check("limits.rollover_angle", l.rolloverAngle);    // 0: from the car
-    check("limits.energy_runaway_fraction", l.energyRunawayFraction);
-    check("limits.max_wall_time", l.maxWallTime);
-    check("limits.severe_separation", sc.severeSeparationTime);
-    check("attribution.truck_mass_scale", sc.attribution.truckMassScale);
-    const CriteriaLimits& c = sc.criteria;
-    check("criteria.roll_peak_to_peak", c.rollPeakToPeakDeg * units::degree);
-    check("criteria.wheel_unloading", c.wheelUnloading);
-    check("criteria.l_over_v", c.lOverV);
-    check("criteria.car_body_vertical_accel_g", c.carBodyVerticalAccelG);
-    check("criteria.car_body_lateral_accel_g", c.carBodyLateralAccelG);
 }
 
 void checkMemoryEstimate(const Scenario& sc, size_t channels) {
@@ -288,6 +248,51 @@ void checkCarValue(const TableReader& reader, const std::string& key, const CarP
 }
 
 
+/// A scalar field's default (ScenarioField::defaultText) into sc.
+void applyDefault(const ScenarioField& f, Scenario& sc) {
+    switch (f.kind) {
+        case FieldKind::Quantity:
+            f.setNumber(sc, f.dimension == units::Dimension::Dimensionless ? std::stod(f.defaultText)
+                                                                          : units::parseQuantity(f.defaultText, f.dimension));
+            break;
+        case FieldKind::Integer: f.setNumber(sc, std::stod(f.defaultText)); break;
+        case FieldKind::Flag: f.setFlag(sc, std::string_view(f.defaultText) == "true"); break;
+        case FieldKind::Choice: f.setText(sc, f.defaultText); break;
+        case FieldKind::Structured: break;
+    }
+}
+
+/// Every scalar field of the schema in TOML table `table`, read from `reader` (range,
+/// type and choices checked) or, when left out, its default.
+void readFields(TableReader& reader, const std::string& table, Scenario& sc) {
+    for (const ScenarioField& f : getScenarioSchema()) {
+        if (f.kind == FieldKind::Structured || f.getTable() != table) continue;
+        const std::string name = f.getName();
+        if (!reader.has(name)) {
+            applyDefault(f, sc);
+            continue;
+        }
+        switch (f.kind) {
+            case FieldKind::Quantity:
+            case FieldKind::Integer: f.setNumber(sc, reader.getRanged(name)); break;
+            case FieldKind::Flag: f.setFlag(sc, reader.getBool(name, false)); break;
+            case FieldKind::Choice: {
+                const std::vector<std::string> choices = f.getChoices();
+                f.setText(sc, reader.getString(name, {choices.begin(), choices.end()}));
+                break;
+            }
+            case FieldKind::Structured: break;
+        }
+    }
+}
+
+/// A table whose every key is a scalar field of the schema.
+void readFieldTable(const toml::table& root, const std::string& table, const std::string& src, Scenario& sc) {
+    TableReader reader(getTable(root, table, src, false), src, table + ".");
+    readFields(reader, table, sc);
+    reader.rejectUnknown();
+}
+
 /// A car file: name, description, and [parameters] with every parameter of the
 /// table as { value = "<number> <unit>", source = "<where it comes from>" }.
 CarParameters readCarFile(const toml::table& root, const std::string& src) {
@@ -338,7 +343,7 @@ void readCar(const toml::table& root, const std::string& src, Scenario& sc) {
         // A complete car inline (as formatScenarioToml writes it): its name and every parameter.
         sc.car = CarParameters{};
     } else {
-        sc.car = makeCarParameters(scenario_defaults::kCarBase);
+        sc.car = makeCarParameters(findScenarioField("car.base")->defaultText);
     }
     if (car.has("name")) {  // names the car (with base or file: a variant of it)
         sc.car.name = car.getText("name", "");
@@ -374,15 +379,8 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
             if (track.has(sine))
                 track.fail(sine, TableReader::describe(*t->get(sine)),
                            "no rectified-sine key with 'file' (the measured track replaces the sine)");
-    // The declared ranges (getValueRange) hold for the sine's keys; a measured track needs none of them.
-    sc.track.amplitude = track.getRanged(
-        "amplitude", measured ? 0.0 : units::parseQuantity(scenario_defaults::kAmplitude, Dimension::Length));
-    sc.track.railLength =
-        track.getRanged("rail_length", units::parseQuantity(scenario_defaults::kRailLength, Dimension::Length));
-    sc.track.rails = int(track.getRanged("rails", 0));
-    sc.track.mirror = track.getBool("mirror", false);
-    sc.entry = track.getString("entry", {"lead", "synchronized"}, "lead") == "lead" ? TrackEntry::Lead
-                                                                                  : TrackEntry::Synchronized;
+    readFields(track, "track", sc);
+    if (measured && !track.has("amplitude")) sc.track.amplitude = 0;  // a measured track replaces the sine
     // A measured table's run-in/run-out when not level at its ends, and whether it repeats (mbmodel/TrackInput.h).
     sc.track.taper = track.getQuantity("taper", Dimension::Length,
                                        units::parseQuantity(kDefaultTaperText, Dimension::Length));
@@ -438,106 +436,26 @@ void readTrack(const toml::table& root, const std::string& src, Scenario& sc) {
 }
 
 void readRun(const toml::table& root, const std::string& src, Scenario& sc) {
-    using units::Dimension;
-    namespace d = scenario_defaults;
     TableReader run(getTable(root, "run", src, false), src, "run.");
-    sc.speed = run.getRanged("speed", units::parseQuantity(d::kSpeed, Dimension::Speed));
-    sc.run.duration = run.getRanged("duration", units::parseQuantity(d::kDuration, Dimension::Time));
-    const std::vector<std::string> models = ModelRegistry::get().getNames();
-    sc.model = run.getString("model", std::set<std::string>(models.begin(), models.end()), d::kModel);
-    sc.run.outputRate = run.getRanged("output_rate", d::kOutputRateHz);
-    sc.filterCutoffHz = run.getRanged("filter_cutoff", d::kFilterCutoffHz);
+    readFields(run, "run", sc);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
         run.fail("filter_cutoff", fmt::format("{} Hz", sc.filterCutoffHz),
                  fmt::format("a cut-off below the Nyquist frequency, half the output rate ({} Hz)", sc.run.outputRate / 2));
     checkSampleCount(run.locate("duration"), sc.run.duration, sc.run.outputRate);
     run.rejectUnknown();
-
-    TableReader integ(getTable(root, "integrator", src, false), src, "integrator.");
-    const auto methods = getIntegratorNames();
-    sc.run.integrator.method = integ.getString("method", {methods.begin(), methods.end()}, d::kIntegratorMethod);
-    sc.run.integrator.accuracy = integ.getRanged("accuracy", d::kAccuracy);
-    sc.run.integrator.maxStepSize = integ.getRanged("max_step", 0.0);
-    integ.rejectUnknown();
-}
-
-void readEom(const toml::table& root, const std::string& src, Scenario& sc) {
-    TableReader eom(getTable(root, "eom", src, false), src, "eom.");
-    EomSimplifications& e = sc.eom;
-    e.linearSprings = eom.getBool("linear_springs", false);
-    e.lockBolsterLateral = eom.getBool("lock_bolster_lateral", false);
-    e.elasticContacts = eom.getBool("elastic_contacts", false);
-    e.equalLateralShares = eom.getBool("equal_lateral_shares", false);
-    e.smallAngles = eom.getBool("small_angles", false);
-    eom.rejectUnknown();
-}
-
-/// [limits]: the run monitor's physical limits (mbmodel/RunLimits.h) and the
-/// severe-regime duration. Every key is optional and range-checked.
-void readLimits(const toml::table& root, const std::string& src, Scenario& sc) {
-    using units::Dimension;
-    TableReader lim(getTable(root, "limits", src, false), src, "limits.");
-    RunLimits& l = sc.run.limits;
-    l.enabled = lim.getBool("enabled", l.enabled);
-    l.flangeHeight = lim.getRanged("flange_height", l.flangeHeight);
-    l.flangeClearance = lim.getRanged("flange_clearance", l.flangeClearance);
-    l.wheelsOffTime = lim.getRanged("wheels_off_time", l.wheelsOffTime);  // omitted: the flanges' free-flight time
-    l.rolloverAngle = lim.getRanged("rollover_angle", l.rolloverAngle);    // omitted: the car's static rollover angle
-    l.energyRunawayFraction = lim.getRanged("energy_runaway_fraction", l.energyRunawayFraction);
-    l.maxWallTime = lim.getRanged("max_wall_time", l.maxWallTime);
-    sc.severeSeparationTime = lim.getRanged("severe_separation", sc.severeSeparationTime);
-    lim.rejectUnknown();
-}
-
-void readReduced(const toml::table& root, const std::string& src, Scenario& sc) {
-    TableReader reduced(getTable(root, "reduced", src, false), src, "reduced.");
-    sc.reduced.truckWeight = reduced.getBool("truck_weight", false);
-    reduced.rejectUnknown();
-}
-
-void readAttribution(const toml::table& root, const std::string& src, Scenario& sc) {
-    TableReader attribution(getTable(root, "attribution", src, false), src, "attribution.");
-    sc.attribution.truckGravity = attribution.getBool("truck_gravity", true);
-    sc.attribution.truckMassScale = attribution.getRanged("truck_mass_scale", sc.attribution.truckMassScale);
-    attribution.rejectUnknown();
-}
-
-/// [criteria]: limits of the summary's freight criteria (mbmodel/RunSummary.h,
-/// CriteriaLimits); every key optional, each a positive finite limit.
-void readCriteria(const toml::table& root, const std::string& src, Scenario& sc) {
-    TableReader table(getTable(root, "criteria", src, false), src, "criteria.");
-    CriteriaLimits& c = sc.criteria;
-    // Kept in degrees, rounded so the echo has no conversion round-off.
-    c.rollPeakToPeakDeg =
-        std::round(table.getRanged("roll_peak_to_peak", c.rollPeakToPeakDeg * units::degree) / units::degree * 1e9) / 1e9;
-    c.wheelUnloading = table.getRanged("wheel_unloading", c.wheelUnloading);
-    c.lOverV = table.getRanged("l_over_v", c.lOverV);
-    c.carBodyVerticalAccelG = table.getRanged("car_body_vertical_accel_g", c.carBodyVerticalAccelG);
-    c.carBodyLateralAccelG = table.getRanged("car_body_lateral_accel_g", c.carBodyLateralAccelG);
-    table.rejectUnknown();
 }
 
 }  // namespace
 
 const std::vector<std::string>& getScenarioKeys() {
     static const std::vector<std::string> keys = [] {
-        // Every key the read* functions above accept, table by table. The test
-        // ScenarioOverrides.SchemaIsWhatTheLoaderReadsAndTheWriterWrites keeps this list,
-        // the readers and formatScenarioToml in step.
-        std::vector<std::string> k{"description", "car.base", "car.file", "car.name"};
-        for (const CarParameterInfo& info : getCarParameterTable()) k.push_back(std::string("car.") + info.key);
-        for (const char* key :
-             {"track.amplitude", "track.rail_length", "track.rails", "track.mirror", "track.entry", "track.file",
-              "track.taper", "track.repeat", "run.speed",
-              "run.duration", "run.model", "run.output_rate", "run.filter_cutoff", "integrator.method",
-              "integrator.accuracy", "integrator.max_step", "eom.linear_springs", "eom.lock_bolster_lateral",
-              "eom.elastic_contacts", "eom.equal_lateral_shares", "eom.small_angles", "limits.enabled",
-              "limits.flange_height", "limits.flange_clearance", "limits.wheels_off_time", "limits.rollover_angle",
-              "limits.energy_runaway_fraction", "limits.max_wall_time", "limits.severe_separation",
-              "reduced.truck_weight", "attribution.truck_gravity", "attribution.truck_mass_scale",
-              "criteria.roll_peak_to_peak", "criteria.wheel_unloading", "criteria.l_over_v",
-              "criteria.car_body_vertical_accel_g", "criteria.car_body_lateral_accel_g"})
-            k.push_back(key);
+        // The schema in order, the car parameters after car.name.
+        std::vector<std::string> k;
+        for (const ScenarioField& f : getScenarioSchema()) {
+            k.push_back(f.key);
+            if (std::string_view(f.key) == "car.name")
+                for (const CarParameterInfo& info : getCarParameterTable()) k.push_back(std::string("car.") + info.key);
+        }
         return k;
     }();
     return keys;
@@ -642,11 +560,8 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     readCar(root, source, sc);
     readTrack(root, source, sc);
     readRun(root, source, sc);
-    readEom(root, source, sc);
-    readLimits(root, source, sc);
-    readReduced(root, source, sc);
-    readAttribution(root, source, sc);
-    readCriteria(root, source, sc);
+    for (const char* table : {"integrator", "eom", "limits", "reduced", "attribution", "criteria"})
+        readFieldTable(root, table, source, sc);
     top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "criteria"});
     sc.settingsSet = listKeys(root);
     return sc;
@@ -763,13 +678,32 @@ std::string formatScenarioToml(const Scenario& sc) {
     }
     root.insert("car", std::move(car));
 
-    toml::table track;
-    track.insert("amplitude", formatSi(sc.track.amplitude, Dimension::Length));
-    track.insert("rail_length", formatSi(sc.track.railLength, Dimension::Length));
-    track.insert("rails", int64_t(sc.track.rails));
-    track.insert("mirror", sc.track.mirror);
-    track.insert("entry", sc.entry == TrackEntry::Lead ? "lead" : "synchronized");
+    // Every scalar field of the schema, in its table.
+    Scenario copy = sc;
+    auto tableOf = [&root](const std::string& name) -> toml::table& {
+        if (!root.contains(name)) root.insert(name, toml::table{});
+        return *root.get_as<toml::table>(name);
+    };
+    for (const ScenarioField& f : getScenarioSchema()) {
+        toml::table* t = f.kind == FieldKind::Structured ? nullptr : &tableOf(f.getTable());
+        const std::string name = f.getName();
+        switch (f.kind) {
+            case FieldKind::Quantity: {
+                const double v = f.getNumber(copy);
+                if (f.zeroIsDerived && v == 0) break;  // left out, so the default is derived again
+                if (f.formatValue) t->insert(name, f.formatValue(copy));
+                else if (f.dimension == Dimension::Dimensionless) t->insert(name, v);
+                else t->insert(name, formatSi(v, f.dimension));
+                break;
+            }
+            case FieldKind::Integer: t->insert(name, int64_t(f.getNumber(copy))); break;
+            case FieldKind::Flag: t->insert(name, f.getFlag(copy)); break;
+            case FieldKind::Choice: t->insert(name, f.getText(copy)); break;
+            case FieldKind::Structured: break;
+        }
+    }
     if (!sc.track.measured.empty()) {
+        toml::table& track = tableOf("track");
         toml::array rows;
         for (const MeasuredTrackSample& m : sc.track.measured)
             rows.push_back(toml::table{{"distance", formatSi(m.distance, Dimension::Length)},
@@ -779,48 +713,6 @@ std::string formatScenarioToml(const Scenario& sc) {
         track.insert("taper", formatSi(sc.track.taper, Dimension::Length));
         track.insert("repeat", sc.track.repeat);
     }
-    root.insert("track", std::move(track));
-
-    toml::table run;
-    run.insert("speed", formatSi(sc.speed, Dimension::Speed));
-    run.insert("duration", formatSi(sc.run.duration, Dimension::Time));
-    run.insert("model", sc.model);
-    run.insert("output_rate", formatSi(sc.run.outputRate, Dimension::Frequency));
-    run.insert("filter_cutoff", formatSi(sc.filterCutoffHz, Dimension::Frequency));
-    root.insert("run", std::move(run));
-
-    toml::table integ;
-    integ.insert("method", sc.run.integrator.method);
-    integ.insert("accuracy", sc.run.integrator.accuracy);
-    integ.insert("max_step", formatSi(sc.run.integrator.maxStepSize, Dimension::Time));
-    root.insert("integrator", std::move(integ));
-
-    root.insert("eom", toml::table{{"linear_springs", sc.eom.linearSprings},
-                                   {"lock_bolster_lateral", sc.eom.lockBolsterLateral},
-                                   {"elastic_contacts", sc.eom.elasticContacts},
-                                   {"equal_lateral_shares", sc.eom.equalLateralShares},
-                                   {"small_angles", sc.eom.smallAngles}});
-
-    root.insert("reduced", toml::table{{"truck_weight", sc.reduced.truckWeight}});
-    root.insert("attribution", toml::table{{"truck_gravity", sc.attribution.truckGravity},
-                                           {"truck_mass_scale", sc.attribution.truckMassScale}});
-
-    const RunLimits& l = sc.run.limits;
-    toml::table limits{{"enabled", l.enabled},
-                       {"flange_height", formatSi(l.flangeHeight, Dimension::Length)},
-                       {"flange_clearance", formatSi(l.flangeClearance, Dimension::Length)},
-                       {"energy_runaway_fraction", l.energyRunawayFraction},
-                       {"max_wall_time", formatSi(l.maxWallTime, Dimension::Time)},
-                       {"severe_separation", formatSi(sc.severeSeparationTime, Dimension::Time)}};
-    // Zero means "from the car": leave it out so the default is derived again.
-    if (l.wheelsOffTime > 0) limits.insert("wheels_off_time", formatSi(l.wheelsOffTime, Dimension::Time));
-    if (l.rolloverAngle > 0) limits.insert("rollover_angle", formatSi(l.rolloverAngle, Dimension::Angle));
-    root.insert("limits", std::move(limits));
-    root.insert("criteria", toml::table{{"roll_peak_to_peak", fmt::format("{} deg", sc.criteria.rollPeakToPeakDeg)},
-                                        {"wheel_unloading", sc.criteria.wheelUnloading},
-                                        {"l_over_v", sc.criteria.lOverV},
-                                        {"car_body_vertical_accel_g", sc.criteria.carBodyVerticalAccelG},
-                                        {"car_body_lateral_accel_g", sc.criteria.carBodyLateralAccelG}});
 
     std::ostringstream os;
     os << toml::toml_formatter(root, toml::format_flags::none);

@@ -1,7 +1,7 @@
 #pragma once
 // Scenario files (TOML): a case — car, track, speed, duration, model, integrator —
-// each key left out taking its default (scenario_defaults, docs/cli.md "Keys and
-// defaults"). Quantities carry units ("0.75 in", "15.5 mph"). An unknown or
+// each key left out taking its default (scenarios/ScenarioSchema.h, the schema that
+// declares every key once; docs/cli.md "Keys and defaults"). Quantities carry units ("0.75 in", "15.5 mph"). An unknown or
 // ill-typed key, or bad unit, is a ScenarioError naming the file, the key, the
 // value and what was expected.
 #include "bespoke/EomHalfCarModel.h"
@@ -46,27 +46,13 @@ struct Scenario {
     CriteriaLimits criteria;           ///< [criteria] table: limits of the summary's criteria
 };
 
-/// The default of each key a scenario leaves out: the values of scenarios/70ton-loaded.toml
-/// (docs/cli.md, "Keys and defaults"; test ScenarioLoader.AnEmptyScenarioIsTheDefaultCase).
-namespace scenario_defaults {
-inline constexpr const char* kCarBase = "70ton-loaded";
-inline constexpr const char* kAmplitude = "0.75 in";
-inline constexpr const char* kRailLength = "39 ft";
-inline constexpr const char* kSpeed = "16.5 mph";
-inline constexpr const char* kDuration = "20 s";
-inline constexpr const char* kModel = "fullcar";
-inline constexpr double kOutputRateHz = 500;
-inline constexpr double kFilterCutoffHz = 20;
-inline constexpr const char* kIntegratorMethod = "cpodes";
-inline constexpr double kAccuracy = 1e-4;
-}  // namespace scenario_defaults
-
 class ScenarioError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-/// The accepted range of one scenario value, declared once: the loader (files and
+/// The accepted range of one scenario value, declared once in the schema
+/// (scenarios/ScenarioSchema.h) or the car parameter table: the loader (files and
 /// overrides), the command line's options and checkScenario (the Python module and
 /// every run) all test values against it. docs/cli.md, "Accepted ranges", lists them.
 struct ValueRange {
