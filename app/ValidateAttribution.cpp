@@ -42,10 +42,10 @@ std::vector<Factor> makeFactors(bool quick) {
     f.push_back({"reduced_truck_weight", "truck weight", "reduced: `truck_weight = true`", model_names::kReduced,
                  [](Scenario& s) { s.reduced.truckWeight = true; }, true, true});
     f.push_back({"halfcar", "baseline", "half car (Simbody)", model_names::kHalfCar, none, true, true});
-    f.push_back({"halfcar_truck_gravity_off", "truck weight", "half car: `truck_gravity = false`", model_names::kHalfCar,
-                 [](Scenario& s) { s.attribution.truckGravity = false; }, true, true});
-    f.push_back({"halfcar_truck_mass_0.01", "truck mass", "half car: `truck_mass_scale = 0.01`", model_names::kHalfCar,
-                 [](Scenario& s) { s.attribution.truckMassScale = 0.01; }, true, false});
+    f.push_back({"halfcar_unsprung_gravity_off", "truck weight", "half car: `unsprung_gravity = false`", model_names::kHalfCar,
+                 [](Scenario& s) { s.attribution.unsprungGravity = false; }, true, true});
+    f.push_back({"halfcar_truck_mass_0.01", "truck mass", "half car: `unsprung_mass_scale = 0.01`", model_names::kHalfCar,
+                 [](Scenario& s) { s.attribution.unsprungMassScale = 0.01; }, true, false});
     if (quick) return f;
     for (double k : {0.25, 0.5, 2.0, 4.0})
         f.push_back({fmt::format("halfcar_contact_stiffness_{:g}", k), "contact stiffness",
@@ -60,10 +60,10 @@ std::vector<Factor> makeFactors(bool quick) {
     f.push_back({"halfcar_bristle_damping_0", "friction", "half car: bristle damping 0 (the reduced wedge has none)",
                  model_names::kHalfCar, [](Scenario& s) { s.car.frictionBristleDampingRatio = 0; }, true, false});
     f.push_back({"fullcar", "baseline", "full car (Simbody)", model_names::kFullCar, none, false, false});
-    f.push_back({"fullcar_truck_gravity_off", "truck weight", "full car: `truck_gravity = false`", model_names::kFullCar,
-                 [](Scenario& s) { s.attribution.truckGravity = false; }, false, false});
-    f.push_back({"fullcar_truck_mass_0.01", "truck mass", "full car: `truck_mass_scale = 0.01`", model_names::kFullCar,
-                 [](Scenario& s) { s.attribution.truckMassScale = 0.01; }, false, false});
+    f.push_back({"fullcar_unsprung_gravity_off", "truck weight", "full car: `unsprung_gravity = false`", model_names::kFullCar,
+                 [](Scenario& s) { s.attribution.unsprungGravity = false; }, false, false});
+    f.push_back({"fullcar_truck_mass_0.01", "truck mass", "full car: `unsprung_mass_scale = 0.01`", model_names::kFullCar,
+                 [](Scenario& s) { s.attribution.unsprungMassScale = 0.01; }, false, false});
     return f;
 }
 
@@ -191,8 +191,8 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
                       R0->staticWheelLoadLb, H0->staticWheelLoadLb);
     if (const RunSummary* x = at("reduced_truck_weight", V))
         md += fmt::format(", reduced with `truck_weight = true` {:.0f} lb", x->staticWheelLoadLb);
-    if (const RunSummary* x = at("halfcar_truck_gravity_off", V))
-        md += fmt::format(", half car with `truck_gravity = false` {:.0f} lb", x->staticWheelLoadLb);
+    if (const RunSummary* x = at("halfcar_unsprung_gravity_off", V))
+        md += fmt::format(", half car with `unsprung_gravity = false` {:.0f} lb", x->staticWheelLoadLb);
     md += fmt::format(". The report's massless truck carries no weight of its own: its wheels carry the car body's "
                       "share only, {:.0f} lb less per side. At {:g} mph from rest the reduced model lifts a wheel "
                       "{:.2f} in and the half car {:.2f} in, a gap of {:.2f} in. Each factor alone, the change of "
@@ -249,7 +249,7 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
                               fmt::join(weights, " and "), 100 * other->share, other->label);
     }
     const RunSummary* R1 = at("reduced_truck_weight", V);
-    const RunSummary* H1 = at("halfcar_truck_gravity_off", V);
+    const RunSummary* H1 = at("halfcar_unsprung_gravity_off", V);
     const RunSummary* H2 = at("halfcar_truck_mass_0.01", V);
     if (H1 && H2)
         md += fmt::format(" Making the half car's wheelsets (with side frames) 1 % of their mass and inertia with their "
@@ -258,13 +258,13 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
                           H2->maxWheelLiftIn, H1->maxWheelLiftIn);
     if (R1 && H2)
         md += fmt::format(" With the truck's weight in both models and its inertia (nearly) out of both — reduced "
-                          "with `truck_weight = true`, half car with `truck_mass_scale = 0.01` — the lifts are "
+                          "with `truck_weight = true`, half car with `unsprung_mass_scale = 0.01` — the lifts are "
                           "{:.2f} and {:.2f} in, max roll {:.2f}° and {:.2f}°.",
                           R1->maxWheelLiftIn, H2->maxWheelLiftIn, R1->maxRollDeg, H2->maxRollDeg);
     if (const RunSummary* F0 = at("fullcar", V)) {
         md += fmt::format(" Full car at {:g} mph: wheel lift {:.2f} in", V, F0->maxWheelLiftIn);
-        if (const RunSummary* x = at("fullcar_truck_gravity_off", V)) md += fmt::format(", {:.2f} in with `truck_gravity = false`", x->maxWheelLiftIn);
-        if (const RunSummary* x = at("fullcar_truck_mass_0.01", V)) md += fmt::format(", {:.2f} in with `truck_mass_scale = 0.01`", x->maxWheelLiftIn);
+        if (const RunSummary* x = at("fullcar_unsprung_gravity_off", V)) md += fmt::format(", {:.2f} in with `unsprung_gravity = false`", x->maxWheelLiftIn);
+        if (const RunSummary* x = at("fullcar_truck_mass_0.01", V)) md += fmt::format(", {:.2f} in with `unsprung_mass_scale = 0.01`", x->maxWheelLiftIn);
         md += ".";
     }
     if (!s.quick) {

@@ -49,7 +49,7 @@ const std::vector<CarParameterInfo> kTable = [] {
         e("center_plate_stiffness", &P::centerPlateStiffness, Dimension::Stiffness, "lb/in"),
         e("side_bearing_stiffness", &P::sideBearingStiffness, Dimension::Stiffness, "lb/in"),
         e("contact_stiffness_scale", &P::contactStiffnessScale, Dimension::Dimensionless, ""),
-        e("contact_dissipation", &P::contactDissipation, Dimension::Dimensionless, "s/m", true),
+        e("contact_dissipation", &P::contactDissipation, Dimension::InverseSpeed, "s/m", true),
         e("center_pin_stiffness", &P::centerPinStiffness, Dimension::Stiffness, "lb/in"),
         e("wheel_rail_lateral_stiffness", &P::wheelRailLateralStiffness, Dimension::Stiffness, "lb/in"),
         e("lateral_contact_damping_ratio", &P::lateralContactDampingRatio, Dimension::Dimensionless, "", true),

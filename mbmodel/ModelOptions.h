@@ -19,12 +19,12 @@ struct AttributionSwitches {
     /// false: gravity off the wheelsets and side frames, their masses kept
     /// (Force::Gravity with those bodies excluded); the static wheel load falls by
     /// their weight.
-    bool truckGravity = true;
+    bool unsprungGravity = true;
     /// Multiplies the wheelset bodies' masses and roll inertias; the weight lost
     /// is put back by a constant downward force at each body's mass center, so the
     /// static loads do not change. Element laws (dampings) keep the true masses.
-    double truckMassScale = 1;
-    bool isDefault() const { return truckGravity && truckMassScale == 1; }
+    double unsprungMassScale = 1;
+    bool isDefault() const { return unsprungGravity && unsprungMassScale == 1; }
 };
 
 struct ModelOptions {

@@ -58,15 +58,15 @@ RockingModel::RockingModel(const CarParameters& car, const TrackInput& track, Mo
 void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec3>& p_CarBodyPlates) {
     const AttributionSwitches& a = options_.attribution;
     for (size_t i = 0; i < specs.size(); ++i) {
-        specs[i].wheelsetGravity = a.truckGravity;
-        specs[i].wheelsetMassScale = a.truckMassScale;
+        specs[i].unsprungGravity = a.unsprungGravity;
+        specs[i].unsprungMassScale = a.unsprungMassScale;
         trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBody_, p_CarBodyPlates[i], car_,
                                                   std::move(specs[i])));
     }
     if (!a.isDefault()) {
         Force::Gravity gravity(forces_, matter_, -SimTK::ZAxis, units::g);
         for (const auto& truck : trucks_)
-            for (int w = 0; w < truck->getNumWheelsets() && !a.truckGravity; ++w)
+            for (int w = 0; w < truck->getNumWheelsets() && !a.unsprungGravity; ++w)
                 gravity.setDefaultBodyIsExcluded(truck->getWheelset(w).getMobilizedBodyIndex(), true);
     }
     energyMeter_ = &addCustomForce<EnergyMeter>(forces_, forces_, *this);

@@ -39,7 +39,7 @@ void Truck::addBodies(SimbodyMatterSubsystem& matter) {
         const double n = ws.lumpedWheelsets;
         const double m = n * (car_.wheelsetWeight + car_.sideFrameWeight) / units::g;
         const double I = n * car_.wheelsetRollInertia;
-        const double f = spec_.wheelsetMassScale;
+        const double f = spec_.unsprungMassScale;
         wheelsets_.push_back(
             makeCrossSectionBody(ground, ws.x, Body::Rigid(MassProperties(f * m, Vec3(0), Inertia(f * I)))));
     }
@@ -112,8 +112,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         const double n = ws.lumpedWheelsets;
         const double m = n * (car_.wheelsetWeight + car_.sideFrameWeight) / units::g;
         // Attribution: the weight a scaled-down mass no longer carries, as a constant force.
-        if (spec_.wheelsetMassScale != 1 && spec_.wheelsetGravity)
-            Force::ConstantForce(forces, wheelsets_[i], Vec3(0), Vec3(0, 0, -(1 - spec_.wheelsetMassScale) * m * units::g));
+        if (spec_.unsprungMassScale != 1 && spec_.unsprungGravity)
+            Force::ConstantForce(forces, wheelsets_[i], Vec3(0), Vec3(0, 0, -(1 - spec_.unsprungMassScale) * m * units::g));
         WheelRailLaw law;
         law.vertical = {n * scale * car_.wheelRailStiffness, d};
         law.lateralStiffness = n * scale * car_.wheelRailLateralStiffness;
@@ -128,7 +128,7 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
 TruckStatics Truck::calcStatics() const {
     TruckStaticLoad load;
     load.carBody = spec_.carBodyLoad;
-    load.unsprungWeight = spec_.wheelsetGravity;
+    load.unsprungWeight = spec_.unsprungGravity;
     return TruckStatics(car_, load);
 }
 

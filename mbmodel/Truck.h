@@ -33,8 +33,8 @@ struct TruckSpec {
     double carBodyLoad = 0;             ///< static load on its center plate [N]
     bool threeDimensional = false;      ///< rim ring, yaw friction, longitudinal pin
     // Attribution switches (RockingModel.h, AttributionSwitches), wheelset bodies only.
-    bool wheelsetGravity = true;        ///< false: the model excludes the wheelsets from gravity
-    double wheelsetMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
+    bool unsprungGravity = true;        ///< false: the model excludes the wheelsets from gravity
+    double unsprungMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
 };
 
 /// One truck's element forces and kinematics at one output time (Truck::calcSample), SI.

@@ -37,6 +37,9 @@ constexpr std::array kUnits{
     UnitDef{"N*s/m", Dimension::Damping, 1.0},   UnitDef{"N·s/m", Dimension::Damping, 1.0},
     UnitDef{"lb*s/in", Dimension::Damping, lbfPerInch},
     UnitDef{"lbf*s/in", Dimension::Damping, lbfPerInch},
+    // Per unit of speed: the Hunt–Crossley contact dissipation d (F = k·δ^n·(1 + d·δ̇)).
+    UnitDef{"s/m", Dimension::InverseSpeed, 1.0},    UnitDef{"s/in", Dimension::InverseSpeed, 1 / inch},
+    UnitDef{"s/ft", Dimension::InverseSpeed, 1 / foot},
 };
 
 std::string_view trim(std::string_view s) {
@@ -58,6 +61,7 @@ std::string_view getDimensionName(Dimension d) {
         case Dimension::Angle: return "angle";
         case Dimension::AngularStiffness: return "angular stiffness";
         case Dimension::Damping: return "viscous damping";
+        case Dimension::InverseSpeed: return "dissipation per speed";
         case Dimension::Dimensionless: return "plain number";
     }
     return "?";

@@ -19,7 +19,7 @@ constexpr double tonne = 1000;              ///< kg
 /// Force units include the mass units kg and t: a mass given where a weight (force) is
 /// expected is its weight under standard gravity g (1 kg → 9.80665 N, 1 t → 9806.65 N).
 enum class Dimension { Length, Speed, Force, Stiffness, Time, Frequency, MomentOfInertia,
-                       Angle, AngularStiffness, Damping, Dimensionless };
+                       Angle, AngularStiffness, Damping, InverseSpeed, Dimensionless };
 
 std::string_view getDimensionName(Dimension d);
 /// Units accepted for a dimension, for error messages ("in, ft, m, mm").

@@ -207,8 +207,10 @@ public:
         if (!table_) return;
         for (const auto& [k, v] : *table_) {
             const std::string key(k.str());
-            if (!used_.count(key) && !alsoAllowed.count(key))
-                fail(key, describe(v), "no such key here (misspelt or not supported)");
+            if (used_.count(key) || alsoAllowed.count(key)) continue;
+            if (const char* renamed = findRenamedKey(prefix_ + key))
+                fail(key, describe(v), fmt::format("its new name, '{}'", renamed));
+            fail(key, describe(v), "no such key here (misspelt or not supported)");
         }
     }
     static std::string describe(const toml::node& n) {
@@ -493,6 +495,8 @@ std::string resolveScenarioKey(const std::string& key, OverrideKeys mode, const 
             if ((dot == std::string::npos ? k : k.substr(dot + 1)) == key) named.push_back(k);
         }
     if (named.size() == 1) return named.front();
+    if (const char* renamed = findRenamedKey(key))
+        throw ScenarioError(fmt::format("override key '{}': renamed; expected its new name, '{}'", key, renamed));
     if (named.size() > 1)
         throw ScenarioError(fmt::format("override key '{}' is ambiguous: it names {}; give the full key", key,
                                         joinKeys(named, " and ")));
@@ -659,6 +663,7 @@ std::string formatSi(double value, units::Dimension dim) {
         case Dimension::Angle: unit = "rad"; break;
         case Dimension::AngularStiffness: unit = "N*m/rad"; break;
         case Dimension::Damping: unit = "N*s/m"; break;
+        case Dimension::InverseSpeed: unit = "s/m"; break;
         case Dimension::Dimensionless: break;
     }
     return fmt::format("{} {}", value, unit);

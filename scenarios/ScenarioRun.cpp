@@ -66,12 +66,12 @@ void checkSwitchesApply(const Scenario& sc) {
                                         "model uses which key\")",
                                         sc.source, sc.run.outputRate, d.fixedOutputRateHz, sc.model));
     const std::string multibody = fmt::format("{}", fmt::join(registry.getMultibodyNames(), " or "));
-    if (!d.isMultibody() && !sc.attribution.truckGravity)
-        throw ScenarioError(fmt::format("{}: key 'attribution.truck_gravity' = false: expected model {}, not \"{}\"",
+    if (!d.isMultibody() && !sc.attribution.unsprungGravity)
+        throw ScenarioError(fmt::format("{}: key 'attribution.unsprung_gravity' = false: expected model {}, not \"{}\"",
                                         sc.source, multibody, sc.model));
-    if (!d.isMultibody() && sc.attribution.truckMassScale != 1)
-        throw ScenarioError(fmt::format("{}: key 'attribution.truck_mass_scale' = {}: expected model {}, not \"{}\"",
-                                        sc.source, sc.attribution.truckMassScale, multibody, sc.model));
+    if (!d.isMultibody() && sc.attribution.unsprungMassScale != 1)
+        throw ScenarioError(fmt::format("{}: key 'attribution.unsprung_mass_scale' = {}: expected model {}, not \"{}\"",
+                                        sc.source, sc.attribution.unsprungMassScale, multibody, sc.model));
 }
 
 std::vector<std::string> getIgnoredSettings(const Scenario& sc) {

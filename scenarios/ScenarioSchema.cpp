@@ -161,9 +161,9 @@ std::vector<ScenarioField> makeSchema() {
                          {RR_NUMBER(severeSeparationTime)}));
     // [reduced], [attribution]
     f.push_back(flag("reduced.truck_weight", "false", {RR_FLAG(reduced.truckWeight)}));
-    f.push_back(flag("attribution.truck_gravity", "true", {RR_FLAG(attribution.truckGravity)}));
-    f.push_back(quantity("attribution.truck_mass_scale", Dimension::Dimensionless, "", 0.001, 1, false, false, "1",
-                         {RR_NUMBER(attribution.truckMassScale)}));
+    f.push_back(flag("attribution.unsprung_gravity", "true", {RR_FLAG(attribution.unsprungGravity)}));
+    f.push_back(quantity("attribution.unsprung_mass_scale", Dimension::Dimensionless, "", 0.001, 1, false, false, "1",
+                         {RR_NUMBER(attribution.unsprungMassScale)}));
     // [criteria]: limits of the summary's freight criteria (mbmodel/RunSummary.h, CriteriaLimits).
     {
         // Kept in degrees, rounded so the echo has no conversion round-off.
@@ -193,6 +193,15 @@ std::vector<ScenarioField> makeSchema() {
 const std::vector<ScenarioField>& getScenarioSchema() {
     static const std::vector<ScenarioField> schema = makeSchema();
     return schema;
+}
+
+const char* findRenamedKey(std::string_view oldKey) {
+    static const std::pair<const char*, const char*> renamed[] = {
+        {"attribution.truck_gravity", "attribution.unsprung_gravity"},
+        {"attribution.truck_mass_scale", "attribution.unsprung_mass_scale"}};
+    for (const auto& [from, to] : renamed)
+        if (oldKey == from) return to;
+    return nullptr;
 }
 
 const ScenarioField* findScenarioField(std::string_view key) {

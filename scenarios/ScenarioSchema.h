@@ -58,6 +58,11 @@ struct ScenarioField {
     std::string getName() const;
 };
 
+/// The new name of a key that was renamed ("attribution.truck_gravity" →
+/// "attribution.unsprung_gravity": it acts on the wheelsets and side frames only); nullptr
+/// for any other key. A renamed key is refused with its new name.
+const char* findRenamedKey(std::string_view oldKey);
+
 /// Every key but the car parameters, in schema order.
 const std::vector<ScenarioField>& getScenarioSchema();
 /// The field of `key`; nullptr when it is not a key of the schema.

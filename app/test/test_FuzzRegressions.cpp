@@ -27,6 +27,7 @@ TEST(FuzzRegressions, EveryFoundInputIsAClearError) {
         {"fuzz_summary", {rockroll::fuzz::readSummary, "summary.json"}},
         {"fuzz_mit1976", {rockroll::fuzz::readMit1976, "mit1976.toml"}},
         {"fuzz_journal", {rockroll::fuzz::readJournal, "<fuzz>"}},
+        {"fuzz_study", {rockroll::fuzz::readStudy, "study.toml"}},
     };
     // The readers' files (FuzzFiles.h getFuzzDir) go under this test's folder.
     setenv("TMPDIR", rockroll::test::makeTestTempDir().c_str(), 1);

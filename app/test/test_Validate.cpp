@@ -286,8 +286,8 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
                                 "Where the upper branch ends"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
     // The quick attribution and convergence sections produce their tables.
-    for (const char* table : {"| half car: `truck_gravity = false` |", "| reduced: `truck_weight = true` |",
-                              "| half car: `truck_mass_scale = 0.01` |", "**Pass or fail per case**",
+    for (const char* table : {"| half car: `unsprung_gravity = false` |", "| reduced: `truck_weight = true` |",
+                              "| half car: `unsprung_mass_scale = 0.01` |", "**Pass or fail per case**",
                               "| halfcar severe (16.5 mph) | severe |"})
         EXPECT_NE(report.find(table), std::string::npos) << table;
     EXPECT_NE(report.find("Generated from commit"), std::string::npos);

@@ -7,6 +7,7 @@
 // crash or a sanitizer report is a finding.
 #include "app/Journal.h"
 #include "app/Provenance.h"
+#include "app/Study.h"
 #include "bench/fuzz/FuzzFiles.h"
 #include "mbmodel/DataFiles.h"
 #include "mbmodel/Mit1976.h"
@@ -120,6 +121,19 @@ inline std::string readJournal(std::string_view input) {
                 throw ScenarioError("<fuzz>:" + std::to_string(n + 2) + ": not a point of this sweep: " + e.what());
             }
         }
+    });
+}
+
+/// A study file (docs/studies.md), read as `rockroll study` reads it: the input's part after a
+/// line "#@scenario.toml" is its base scenario, the file scenario.toml beside it (`scenario =
+/// "scenario.toml"` names it). Every point of an accepted plan must give a scenario that loads.
+inline std::string readStudy(std::string_view input) {
+    const auto [study, scenario] = splitAtMarker(input, "#@scenario.toml");
+    writeFuzzFile("scenario.toml", scenario);
+    const std::string path = writeFuzzFile("study.toml", study).string();
+    return getInputError([&] {
+        const app::StudyPlan plan = app::loadStudy(path);
+        for (size_t i = 0; i < plan.points.size() && i < 16; ++i) (void)app::getPointOverrides(plan, i);
     });
 }
 

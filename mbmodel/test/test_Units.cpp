@@ -48,6 +48,8 @@ TEST(Units, ParsesMetricFormsByTheirFactors) {
         {"3 N·s/m", Dimension::Damping, 3.0},
         {"3 N*s/m", Dimension::Damping, 3.0},
         {"3 lb*s/in", Dimension::Damping, 3 * 4.4482216152605 / 0.0254},
+        {"5 s/m", Dimension::InverseSpeed, 5.0},
+        {"0.127 s/in", Dimension::InverseSpeed, 0.127 / 0.0254},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.text);

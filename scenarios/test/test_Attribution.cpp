@@ -1,5 +1,5 @@
 // The attribution switches (docs/model.md, "Parameters"; results/REPORT.md section 10): the reduced model's [reduced] truck_weight
-// and the Simbody models' [attribution] truck_gravity / truck_mass_scale. Each
+// and the Simbody models' [attribution] unsprung_gravity / unsprung_mass_scale. Each
 // must change exactly what it says in the static state, and nothing else.
 #include "bespoke/ReducedHalfCarModel.h"
 #include "scenarios/ModelRegistry.h"
@@ -52,24 +52,24 @@ Static makeStatic(const std::string& modelName, AttributionSwitches a) {
 
 TEST(Attribution, ScenarioKeysAreReadAndRangeChecked) {
     const Scenario sc = parseScenario(kBase +
-                                          "[reduced]\ntruck_weight = true\n[attribution]\ntruck_gravity = false\n"
-                                          "truck_mass_scale = 0.01\n",
+                                          "[reduced]\ntruck_weight = true\n[attribution]\nunsprung_gravity = false\n"
+                                          "unsprung_mass_scale = 0.01\n",
                                       "x.toml");
     EXPECT_TRUE(sc.reduced.truckWeight);
-    EXPECT_FALSE(sc.attribution.truckGravity);
-    EXPECT_EQ(sc.attribution.truckMassScale, 0.01);
+    EXPECT_FALSE(sc.attribution.unsprungGravity);
+    EXPECT_EQ(sc.attribution.unsprungMassScale, 0.01);
     const Scenario def = parseScenario(kBase, "x.toml");
     EXPECT_FALSE(def.reduced.truckWeight);
     EXPECT_TRUE(def.attribution.isDefault());
 
-    std::string e = errorOf("[attribution]\ntruck_mass_scale = 0\n");
+    std::string e = errorOf("[attribution]\nunsprung_mass_scale = 0\n");
     EXPECT_NE(e.find("case.toml"), std::string::npos) << e;
-    EXPECT_NE(e.find("attribution.truck_mass_scale"), std::string::npos) << e;
+    EXPECT_NE(e.find("attribution.unsprung_mass_scale"), std::string::npos) << e;
     EXPECT_NE(e.find("[0.001, 1]"), std::string::npos) << e;
-    EXPECT_NE(errorOf("[attribution]\ntruck_mass_scale = 2\n"), "");
-    EXPECT_NE(errorOf("[attribution]\ntruck_mass_scale = \"0.1 lb\"\n"), "");
-    e = errorOf("[attribution]\ntruck_gravity = \"no\"\n");
-    EXPECT_NE(e.find("attribution.truck_gravity"), std::string::npos) << e;
+    EXPECT_NE(errorOf("[attribution]\nunsprung_mass_scale = 2\n"), "");
+    EXPECT_NE(errorOf("[attribution]\nunsprung_mass_scale = \"0.1 lb\"\n"), "");
+    e = errorOf("[attribution]\nunsprung_gravity = \"no\"\n");
+    EXPECT_NE(e.find("attribution.unsprung_gravity"), std::string::npos) << e;
     EXPECT_NE(e.find("true or false"), std::string::npos) << e;
     e = errorOf("[reduced]\ntruck_weight = 1\n");
     EXPECT_NE(e.find("reduced.truck_weight"), std::string::npos) << e;
@@ -83,7 +83,7 @@ TEST(Attribution, SwitchOnAModelItDoesNotApplyToIsAScenarioError) {
     EXPECT_THROW(runScenario(sc), ScenarioError);  // halfcar
     sc.model = "reduced";
     EXPECT_NO_THROW(runScenario(sc));
-    Scenario a = parseScenario(kBase + "[attribution]\ntruck_gravity = false\n", "x.toml");
+    Scenario a = parseScenario(kBase + "[attribution]\nunsprung_gravity = false\n", "x.toml");
     a.run.duration = 0.1;
     for (const char* m : {"eom", "reduced"}) {
         a.model = m;
@@ -159,7 +159,7 @@ TEST(Attribution, SimbodyTruckMassScaleKeepsTheStaticLoads) {
     }
     // And a short run at rest stays there.
     Scenario sc = test_cases::makeCase("halfcar", 0.0, 16.5, 0.2);
-    sc.attribution.truckMassScale = 0.01;
+    sc.attribution.unsprungMassScale = 0.01;
     const RunSummary r = runScenario(sc).summary;
     EXPECT_NEAR(r.maxWheelLoadLb, r.staticWheelLoadLb, 1e-4 * r.staticWheelLoadLb);
     EXPECT_LT(r.maxRollDeg, 1e-9);

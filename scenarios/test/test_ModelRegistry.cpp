@@ -79,7 +79,7 @@ TEST(ModelRegistry, AStateContinuesOnlyInTheModelThatProducedIt) {
 
 TEST(ModelRegistry, SwitchesApplyByCapabilityNotByName) {
     Scenario sc = makeCase("eom", 0.75, 16.5, 0.2);
-    sc.attribution.truckGravity = false;
+    sc.attribution.unsprungGravity = false;
     try {
         checkSwitchesApply(sc);
         FAIL() << "attribution switch accepted for eom";

@@ -147,7 +147,7 @@ TEST(ScenarioLoader, CheckScenarioRefusesValuesChangedAfterLoading) {
 TEST(ScenarioLoader, BooleansAreTomlBooleansOnly) {
     for (const char* text : {"[track]\nmirror = 1\n", "[track]\nrepeat = 0\n", "[eom]\nsmall_angles = 1\n",
                              "[limits]\nenabled = 0\n", "[reduced]\ntruck_weight = 1\n",
-                             "[attribution]\ntruck_gravity = 0\n"})
+                             "[attribution]\nunsprung_gravity = 0\n"})
         EXPECT_NE(errorOf(text).find("expected true or false"), std::string::npos) << text << ": " << errorOf(text);
     EXPECT_EQ(errorOf("[eom]\nsmall_angles = true\n"), "");
     const std::string e = errorOf("[criteria]\nl_over_v = 20\n");

@@ -80,3 +80,22 @@ TEST(ScenarioSchema, EachKeyIsDeclaredOnce) {
     EXPECT_EQ(keys.size(), getScenarioKeys().size());
     for (const ScenarioField& f : getScenarioSchema()) EXPECT_TRUE(keys.count(f.key)) << f.key;
 }
+
+// A renamed key is refused with its new name, in a file and as an override.
+TEST(ScenarioSchema, ARenamedKeyIsRefusedWithItsNewName) {
+    try {
+        parseScenario("[attribution]\ntruck_gravity = false\n", "old.toml");
+        ADD_FAILURE() << "accepted";
+    } catch (const ScenarioError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("old.toml:2: key 'attribution.truck_gravity'"), std::string::npos) << m;
+        EXPECT_NE(m.find("'attribution.unsprung_gravity'"), std::string::npos) << m;
+    }
+    try {
+        parseScenario("", "old.toml", {{"attribution.truck_mass_scale", "0.5"}});
+        ADD_FAILURE() << "accepted";
+    } catch (const ScenarioError& e) {
+        EXPECT_NE(std::string(e.what()).find("'attribution.unsprung_mass_scale'"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(findRenamedKey("run.speed"), nullptr);
+}

@@ -104,7 +104,7 @@ ranged = {
     ("limits", "energy_runaway_fraction"): ["0", "101", "nan"],
     ("limits", "max_wall_time"): ['"0 s"', '"8 days"', '"1e9 s"', '"-1 s"'],
     ("limits", "severe_separation"): ['"-1 s"', '"2 s"'],
-    ("attribution", "truck_mass_scale"): ["0", "2", "nan", '"1"'],
+    ("attribution", "unsprung_mass_scale"): ["0", "2", "nan", '"1"'],
 }
 for (table, key), values in ranged.items():
     for i, v in enumerate(values):
@@ -132,7 +132,7 @@ file_case("track-entry-unknown", "track", "entry", '"sideways"', "lead")
 file_case("track-mirror-string", "track", "mirror", '"yes"', "true or false")
 file_case("eom-linear_springs-number", "eom", "linear_springs", '"no"', "true or false")
 file_case("reduced-truck_weight-number", "reduced", "truck_weight", "1", "true or false")
-file_case("attribution-truck_gravity-number", "attribution", "truck_gravity", "0", "true or false")
+file_case("attribution-unsprung_gravity-number", "attribution", "unsprung_gravity", "0", "true or false")
 file_case("limits-enabled-string", "limits", "enabled", '"off"', "true or false")
 file_case("car-base-unknown", "car", "base", '"nosuch"', "one of")
 file_case("car-name-empty", "car", "name", '""', "non-empty")
@@ -147,7 +147,7 @@ file_case("top-unknown-key", "", "speed", '"16 mph"', "no such key")
 # (switches that do not apply to the model are found when the model is known: no line)
 file_case("switch-truck_weight-halfcar", "reduced", "truck_weight", "true", "expected model",
           args="run $BAD/{f} --model halfcar --out out/{n}", line=False)
-file_case("switch-mass_scale-reduced", "attribution", "truck_mass_scale", "0.5", "expected model", line=False)
+file_case("switch-mass_scale-reduced", "attribution", "unsprung_mass_scale", "0.5", "expected model", line=False)
 file_case("run-output_rate-reduced", "run", "output_rate", '"500 Hz"', "expected 200 Hz for model \"reduced\"",
           line=False)
 
