@@ -287,6 +287,37 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
             stepped[i].lowestRollDeg = steppedPoints[i].back().summary.steadyRollAmplitudeDeg;
     }
 
+    // The reduced model's down sweeps at several times a speed: its severe response is not
+    // periodic (the settle table), so where a sweep leaves it may depend on the dwell.
+    struct Dwell {
+        double amp, dwellS, dropMph = NAN;
+    };
+    std::vector<Dwell> dwells;
+    std::vector<SweepSpec> dwellSpecs;
+    if (!s.quick)
+        for (double amp : {0.75, 1.0})
+            for (double dwell : {15.0, 30.0, 60.0, 120.0}) {
+                SweepSpec spec;
+                spec.scenario = car;
+                spec.scenario.model = model_names::kReduced;
+                spec.scenario.track.amplitude = amp * units::inch;
+                spec.scenario.run.duration = dwell;
+                spec.fromMph = 10, spec.toMph = 22, spec.stepMph = 0.5;
+                spec.direction = SweepDirection::Down;
+                dwellSpecs.push_back(spec);
+                dwells.push_back({amp, dwell});
+            }
+    const auto dwellPoints = runSweeps(dwellSpecs, s.jobs);
+    for (size_t i = 0; i < dwells.size(); ++i) dwells[i].dropMph = findDrop(dwellPoints[i]);
+    auto describeDwells = [&](double amp) {
+        std::vector<std::string> parts;
+        for (const auto& d : dwells)
+            if (d.amp == amp)
+                parts.push_back(fmt::format("{:g} s: {}", d.dwellS,
+                                            std::isfinite(d.dropMph) ? fmt::format("{:.1f} mph", d.dropMph) : "none"));
+        return fmt::format("{}", fmt::join(parts, "; "));
+    };
+
     // Data: one CSV per case, one row per orbit point computed.
     for (const auto& r : results) {
         const std::string file = fmt::format("orbits_{}_{}.csv", r.c.getKey(), r.c.model);
@@ -583,14 +614,26 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                                                 st.stepMph,
                                                 std::isfinite(st.dropMph) ? fmt::format("drops at {:.1f} mph", st.dropMph)
                                                                           : "never drops");
+            foldSentence += " The report's Figure 11 comes from its §2.2 digital simulation, the reduced model's "
+                            "formulation (§3, \"Digital simulation runs\"), and plots \"the maximum car body roll angle "
+                            "occurring in a simulation time history\"; its §3.1 says that a severe-rocking response "
+                            "computed for longer \"exhibits a series of 'beats' with successive growing and decaying "
+                            "cycles\".";
             for (const auto& red : results)
                 if (red.c.model == model_names::kReduced && red.c.amplitudeIn == 1.0)
                     foldSentence += fmt::format(" The reduced model at 1.0 in, by iteration from its down sweep's state at "
                                                 "{:g} mph: {}; {}.",
                                                 red.c.startMph, describeEnd(red), describeSettled(red));
-            foldSentence += " The report computed its points \"from initial conditions of lower speed ... as well as "
-                            "from higher speed\" (§3.2) and does not say how the speed changed between them; what made "
-                            "its simulation leave the branch at 13.5 mph is not measured here.\n";
+            if (!dwells.empty())
+                foldSentence += fmt::format(
+                    " Its down sweeps from 22 mph (0.5 mph steps, the 1 s ramp) with different times at each speed drop "
+                    "at: 1.0 in: {}; 0.75 in: {}.",
+                    describeDwells(1.0), describeDwells(0.75));
+            foldSentence += " So where the report's simulation left severe rocking is not the end of a branch of "
+                            "periodic orbits: in its formulation the severe response there is not periodic, and where a "
+                            "run of finite length leaves it depends on how long it runs at each speed and the state it "
+                            "starts from; the report does not give either for Figure 11 (its §3.2 says only that points "
+                            "were computed \"from initial conditions of lower speed ... as well as from higher speed\").\n";
         }
     md += foldSentence;
     return md + "\n";
