@@ -125,7 +125,16 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
             } else if (st >= 0 && !r[st].empty()) {
                 errors.push_back(name + ": a point that did not converge has a stability");
             }
+        // The reduced model's orbits are found by iteration (docs/orbits.md): no real multipliers, empty cells.
+        const bool iterated = name.size() > 12 && name.substr(name.size() - 12) == "_reduced.csv";
         for (const auto& col : kOrbitNumbers) try {
+                const bool real = std::string(col).find("real_multiplier") != std::string::npos;
+                if (iterated && real) {
+                    const int k = ok.find(col);
+                    for (const auto& r : ok.rows)
+                        if (k >= 0 && !r[k].empty()) errors.push_back(name + ": " + col + " = \"" + r[k] + "\" (iteration gives none)");
+                    continue;
+                }
                 for (double v : ok.numbers(col))
                     if (!std::isfinite(v)) errors.push_back(name + ": " + col + " holds " + std::to_string(v));
             } catch (const std::exception& e) {
