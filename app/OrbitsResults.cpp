@@ -78,6 +78,14 @@ OrbitSettings checkOrbitsInput(const Scenario& sc0, const OrbitsOptions& o) {
     if (o.fromMph == o.toMph)
         throw ScenarioError("--from-mph and --to-mph are equal: expected a speed range to continue over");
     (void)PeriodicOrbitSolver::calcTrackPeriod(sc0);  // ScenarioError when the track does not repeat
+    // Settings the computation would not use are refused, not dropped.
+    const OrbitsOptions defaults;
+    if (o.iterate && (o.newtonSteps != defaults.newtonSteps || o.fdStepScale != defaults.fdStepScale))
+        throw ScenarioError("--iterate finds orbits without Newton or a monodromy: --newton-steps and --fd-step-scale "
+                            "have no effect with it; expected one or the other");
+    if (!ModelRegistry::get().getModel(sc0.model).usesSetting("integrator.accuracy") && o.accuracy != defaults.accuracy)
+        throw ScenarioError(fmt::format("--accuracy {:g}: model \"{}\" integrates with fixed steps and does not use it",
+                                        o.accuracy, sc0.model));
     OrbitSettings settings;
     settings.accuracy = o.accuracy;
     settings.shooting.threads = o.jobs;
@@ -176,7 +184,9 @@ OrbitsResult calcOrbits(const Scenario& sc0, const OrbitsOptions& o, const std::
                   "monodromy (a chord Newton from the previous orbit's along the branch); natural-parameter continuation in "
                   "speed with a secant predictor (docs/orbits.md)";
     j["orbit_method"] = o.iterate ? "iteration" : "newton";
-    j["accuracy"] = o.accuracy;
+    // null: the model integrates with fixed steps (the reduced model) and uses no accuracy.
+    j["accuracy"] = ModelRegistry::get().getModel(sc0.model).usesSetting("integrator.accuracy") ? json(o.accuracy)
+                                                                                              : json(nullptr);
     j["fd_step_scale"] = o.fdStepScale;
     j["settle_periods"] = o.settlePeriods;
     j["start"] = {{"speed_mph", o.fromMph},

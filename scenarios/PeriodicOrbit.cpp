@@ -241,7 +241,6 @@ PeriodicOrbit PeriodicOrbitSolver::iterate(double speedMph, const std::vector<do
     } else {
         o.converged = true;
         o.y = found;
-        o.iterations = o.mapEvaluations;
         o.largestRealMultiplier = o.smallestRealMultiplier = std::numeric_limits<double>::quiet_NaN();
         o.stable = true;  // iteration only reaches attracting orbits
         describe(o);

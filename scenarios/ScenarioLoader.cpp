@@ -684,7 +684,6 @@ std::string formatScenarioToml(const Scenario& sc) {
     root.insert("car", std::move(car));
 
     // Every scalar field of the schema, in its table.
-    Scenario copy = sc;
     auto tableOf = [&root](const std::string& name) -> toml::table& {
         if (!root.contains(name)) root.insert(name, toml::table{});
         return *root.get_as<toml::table>(name);
@@ -694,16 +693,16 @@ std::string formatScenarioToml(const Scenario& sc) {
         const std::string name = f.getName();
         switch (f.kind) {
             case FieldKind::Quantity: {
-                const double v = f.getNumber(copy);
+                const double v = f.getNumber(sc);
                 if (f.zeroIsDerived && v == 0) break;  // left out, so the default is derived again
-                if (f.formatValue) t->insert(name, f.formatValue(copy));
+                if (f.formatValue) t->insert(name, f.formatValue(sc));
                 else if (f.dimension == Dimension::Dimensionless) t->insert(name, v);
                 else t->insert(name, formatSi(v, f.dimension));
                 break;
             }
-            case FieldKind::Integer: t->insert(name, int64_t(f.getNumber(copy))); break;
-            case FieldKind::Flag: t->insert(name, f.getFlag(copy)); break;
-            case FieldKind::Choice: t->insert(name, f.getText(copy)); break;
+            case FieldKind::Integer: t->insert(name, int64_t(f.getNumber(sc))); break;
+            case FieldKind::Flag: t->insert(name, f.getFlag(sc)); break;
+            case FieldKind::Choice: t->insert(name, f.getText(sc)); break;
             case FieldKind::Structured: break;
         }
     }

@@ -68,6 +68,7 @@ TEST(OrbitsCommand, IteratesTheReducedModel) {
     EXPECT_EQ(j["orbit_method"], "iteration");
     EXPECT_EQ(j["settle_periods"], 5);
     ASSERT_EQ(j["points"].size(), 2u);
+    EXPECT_TRUE(j["accuracy"].is_null());  // fixed-step RK4: no accuracy
     for (const auto& p : j["points"]) {
         EXPECT_TRUE(p["converged"].get<bool>()) << p.dump();
         EXPECT_TRUE(p["stable"].get<bool>());
@@ -115,4 +116,17 @@ TEST(OrbitsCommand, RefusesAStartRampWithoutAStartSweep) {
     const CliOutcome sweep = runRockroll(dir, "sweep " + kScenario + " --from-mph 12 --to-mph 13 --step-mph 1 --fresh --speed-ramp-s 0");
     EXPECT_EQ(sweep.exitCode, 2) << sweep.err;
     EXPECT_NE(sweep.err.find("--fresh"), std::string::npos) << sweep.err;
+}
+
+// A setting the computation would not use is refused (exit 2), not dropped: Newton's options
+// with --iterate, an integrator accuracy for the fixed-step reduced model.
+TEST(OrbitsCommand, RefusesSettingsItWouldNotUse) {
+    const auto dir = makeTestTempDir();
+    const std::string base = "orbits " + kScenario + " --model reduced --from-mph 12 --to-mph 11.5 ";
+    const CliOutcome a = runRockroll(dir, base + "--iterate --newton-steps 5");
+    EXPECT_EQ(a.exitCode, 2) << a.err;
+    EXPECT_NE(a.err.find("--newton-steps"), std::string::npos) << a.err;
+    const CliOutcome b = runRockroll(dir, base + "--iterate --accuracy 1e-9");
+    EXPECT_EQ(b.exitCode, 2) << b.err;
+    EXPECT_NE(b.err.find("does not use it"), std::string::npos) << b.err;
 }
