@@ -59,6 +59,8 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["raw_max_wheel_unloading"] = valueOrNull(s.rawMaxWheelUnloading);
     j["max_l_over_v"] = valueOrNull(s.maxLOverV);
     j["raw_max_l_over_v"] = valueOrNull(s.rawMaxLOverV);
+    j["max_truck_side_l_over_v"] = valueOrNull(s.maxTruckSideLOverV);
+    j["raw_max_truck_side_l_over_v"] = valueOrNull(s.rawMaxTruckSideLOverV);
     j["max_car_body_vertical_accel_g"] = valueOrNull(s.maxCarBodyVerticalAccelG);
     j["raw_max_car_body_vertical_accel_g"] = valueOrNull(s.rawMaxCarBodyVerticalAccelG);
     j["max_car_body_lateral_accel_g"] = valueOrNull(s.maxCarBodyLateralAccelG);

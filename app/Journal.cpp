@@ -134,6 +134,8 @@ RunSummary summaryFromJson(const Json& j) {
     s.rawMaxWheelUnloading = numberOrNaN(j, "raw_max_wheel_unloading");
     s.maxLOverV = numberOrNaN(j, "max_l_over_v");
     s.rawMaxLOverV = numberOrNaN(j, "raw_max_l_over_v");
+    s.maxTruckSideLOverV = numberOrNaN(j, "max_truck_side_l_over_v");
+    s.rawMaxTruckSideLOverV = numberOrNaN(j, "raw_max_truck_side_l_over_v");
     s.maxCarBodyVerticalAccelG = numberOrNaN(j, "max_car_body_vertical_accel_g");
     s.rawMaxCarBodyVerticalAccelG = numberOrNaN(j, "raw_max_car_body_vertical_accel_g");
     s.maxCarBodyLateralAccelG = numberOrNaN(j, "max_car_body_lateral_accel_g");

@@ -83,7 +83,7 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
         r.c = c;
         r.model = m;
         const Scenario car = loadCarScenario(c.car);
-        r.criteria = car.criteria;
+        r.criteria = resolveCriteriaLimits(car);
         results.push_back(r);
         for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
             SweepSpec spec;

@@ -51,7 +51,7 @@ void runCase(benchmark::State& state, const std::string& model, const std::strin
     if (!gRecorded.count(model)) {
         const ChannelLayout layout =
             ModelRegistry::get().getModel(model).make(sc, makeTrackMotion(sc))->getChannels();
-        gRecorded[model] = {run.result, layout, resolveRunLimits(sc.run.limits, sc.car)};
+        gRecorded[model] = {run.result, layout, resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail)};
     }
     Measured m{r.simTimeS / r.wallTimeS, r.maxRollDeg, r.steps, r.realizations, r.wallTimeS, r.simTimeS};
     gMeasured[fmt::format("{} {} {:g}", model, method, accuracy)] = m;
@@ -234,7 +234,7 @@ int main(int argc, char** argv) {
         ReducedRunStatistics st;
         const auto t0 = std::chrono::steady_clock::now();
         const std::clock_t c0 = std::clock();
-        const RunResult r = simulateReduced(model, gSimSeconds, &st, {}, resolveRunLimits(sc.run.limits, sc.car));
+        const RunResult r = simulateReduced(model, gSimSeconds, &st, {}, resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail));
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
         fmt::print("\nreduced truck-mode search ({} s simulated, {:.3f} s wall, {:.3f} s CPU, {:.0f} sim s / CPU s):\n"

@@ -17,8 +17,9 @@ constexpr int kWedgeVertical = 0, kWedgeLateral = 1;  // + 2·side
 using Vec2 = Eigen::Vector2d;
 }  // namespace
 
-EomHalfCarModel::EomHalfCarModel(const CarParameters& car, RailStateFunction rails, EomSimplifications simp)
-    : car_(car), rails_(std::move(rails)), simp_(simp) {
+EomHalfCarModel::EomHalfCarModel(const CarParameters& car, RailStateFunction rails, EomSimplifications simp,
+                                 WheelRailSettings wheelRail)
+    : car_(car), rails_(std::move(rails)), simp_(simp), wheelRail_(wheelRail) {
     const double g = units::g;
     mass_ = {car.getCarBodyWeight() / 2 / g, car.bolsterWeight / g, 2 * (car.wheelsetWeight + car.sideFrameWeight) / g};
     inertia_ = {car.rollInertia / 2, car.bolsterRollInertia, 2 * car.wheelsetRollInertia};
@@ -198,6 +199,28 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         f.elasticEnergy += calcUnilateralContactEnergy(delta, laws_.wheelVertical);
         f.wheelLift[side] = std::max(0.0, -delta);
     }
+    if (wheelRail_.lateral == LateralWheelRail::CreepAndFlange) {
+        // Each side its own creep and flange (WheelRailContact.h), two wheels lumped.
+        for (int side : {0, 1}) {
+            const double sg = side == 0 ? 1.0 : -1.0;
+            const double e = tread[side].x.x() - g.railY[side], v = tread[side].v.x();
+            const double delta = rail.z[side] - tread[side].x.y();
+            f.wheelOffset[side] = e;
+            const double creep = calcLateralCreepForce(v, rail.speed, f.wheel[side], 2, wheelRail_);
+            f.dissipatedPower -= creep * v;
+            const FlangeForces fl = calcFlangeForces(sg * e, sg * v, -delta, tread[side].v.y() - rail.zDot[side],
+                                                     rail.speed, 2, laws_.wheelVertical, wheelRail_);
+            f.wheelFlange[side] = fl.normal;
+            f.wheel[side] += fl.vertical;
+            f.wheelLateral[side] = creep + sg * fl.towardRail;
+            f.dissipatedPower += fl.dissipatedPower;
+            f.elasticEnergy += calcFlangeEnergy(sg * e, -delta, laws_.wheelVertical, wheelRail_);
+            f.railInputPower += fl.vertical * rail.zDot[side];
+            applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
+        }
+        for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;
+        return f;
+    }
     const double total = f.wheel[0] + f.wheel[1];
     for (int side : {0, 1}) {
         const double share = simp_.equalLateralShares ? 0.5 : (total > 0 ? f.wheel[side] / total : 0.0);
@@ -260,7 +283,7 @@ void EomHalfCarModel::declareChannels() {
     }
     c.add("bolster_roll_F", "deg", [=](const Sample& s) { return s.y[3 * Bolster] / deg; });
     c.add("bolster_lateral_F", "in", [=](const Sample& s) { return s.y[3 * Bolster + 1] / in; });
-    declareEquivalentWheelsetChannels(c, true);
+    declareEquivalentWheelsetChannels(c, true, wheelRail_.lateral == LateralWheelRail::CreepAndFlange);
     declareEnergyChannels(c);
     // With equal lateral shares a lifted wheel still carries half the lateral restraint,
     // so its L/V would be ±infinity: a value of the simplification, not of the wheel. Such
@@ -287,6 +310,7 @@ EomHalfCarModel::Sample EomHalfCarModel::calcSample(double t, const State& y, co
         s.wheelLift[side] = f.wheelLift[side];
         s.wheelOffset[side] = f.wheelOffset[side];
         s.wheelLateral[side] = f.wheelLateral[side];
+        s.wheelFlange[side] = f.wheelFlange[side];
     }
     // The car body's accelerations, as calcStateDerivative forms them.
     s.verticalAccel = f.generalized[3 * CarBody + 2] / mass_[CarBody];
@@ -318,6 +342,7 @@ RailStateFunction makeEquivalentWheelsetInput(const TrackInput& track, const Tra
     return [track, motion, wheelbase](double t) {
         RailState r;
         const double s = motion.calcDistance(t), V = motion.calcSpeed(t);
+        r.speed = V;
         for (double s0 : {0.0, -wheelbase}) {
             const RailPoint p = track.calcRails(s + s0);
             for (int i = 0; i < 2; ++i) {

@@ -26,6 +26,7 @@
 #include "contacts/BristleFriction.h"
 #include "contacts/SpringGroupLaws.h"
 #include "contacts/UnilateralContactLaw.h"
+#include "contacts/WheelRailLaws.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TruckStatics.h"
@@ -42,6 +43,7 @@ namespace rockroll {
 struct RailState {
     std::array<double, 2> z{0, 0};     ///< [m]
     std::array<double, 2> zDot{0, 0};  ///< [m/s]
+    double speed = 0;                  ///< forward speed V [m/s] (the creepages' denominator)
 };
 using RailStateFunction = std::function<RailState(double t)>;
 
@@ -73,6 +75,7 @@ public:
         std::array<BristleFrictionState, 4> wedge{};
         std::array<double, 2> wheel{0, 0}, wheelLateral{0, 0}, wheelLift{0, 0};
         std::array<double, 2> wheelOffset{0, 0};  ///< tread − rail, lateral [m]
+        std::array<double, 2> wheelFlange{0, 0};  ///< flange normal force, creep and flange only [N]
         double pin = 0;  ///< on the car body, +y
         // Energy audit [W]: the rails' work rate Σ N_i·ż_rail,i + Σ F_y,i·ė_i (the
         // lateral restraint is the rails' external force, WheelRailContact.h) and
@@ -84,7 +87,10 @@ public:
         Eigen::Matrix<double, kNumDofs, 1> generalized = Eigen::Matrix<double, kNumDofs, 1>::Zero();
     };
 
-    EomHalfCarModel(const CarParameters& car, RailStateFunction rails, EomSimplifications simplifications = {});
+    /// `wheelRail`: the lateral wheel–rail formulation, as the Simbody half car's
+    /// (contacts/WheelRailContact.h), its two wheels per side lumped.
+    EomHalfCarModel(const CarParameters& car, RailStateFunction rails, EomSimplifications simplifications = {},
+                    WheelRailSettings wheelRail = {});
 
     /// Static equilibrium on level rails, placed as the Simbody half car places it.
     State makeStaticState() const;
@@ -156,6 +162,7 @@ private:
     CarParameters car_;
     RailStateFunction rails_;
     EomSimplifications simp_;
+    WheelRailSettings wheelRail_;
     Geometry geom_;
     Laws laws_;
     std::array<double, 3> mass_{}, inertia_{};

@@ -33,6 +33,7 @@ enum class ChannelRole : unsigned {
     EnergyStored = 1u << 11,         ///< [J]
     EnergyInput = 1u << 12,          ///< [J]
     EnergyDissipated = 1u << 13,     ///< [J]
+    TruckSideLOverV = 1u << 14,      ///< ΣL/ΣV of the wheels of one truck side [ratio]
 };
 constexpr ChannelRole operator|(ChannelRole a, ChannelRole b) { return ChannelRole(unsigned(a) | unsigned(b)); }
 constexpr bool hasRole(ChannelRole roles, ChannelRole r) { return (unsigned(roles) & unsigned(r)) != 0; }
@@ -60,12 +61,16 @@ struct ChannelLayout {
     std::vector<int> wheelLift;            ///< [in]
     std::vector<int> wheelUnloading;       ///< [ratio]
     std::vector<int> lOverV;               ///< [ratio]; empty when the model has no lateral wheel forces
+    std::vector<int> truckSideLOverV;      ///< [ratio]; the same
     std::vector<int> carBodyVerticalAccel, carBodyLateralAccel;  ///< [g]
     /// One (equivalent) wheelset: its two wheels' lifts [in] and its lateral
     /// displacement from the track centre line at rail-head height [in]
     /// (-1 where the formulation holds the wheelset laterally by construction).
     struct Wheelset {
         int liftLeft = -1, liftRight = -1, lateral = -1;
+        /// Flange normal force and the wheel's own L/V, left and right; −1 when the
+        /// model has no flange contact (the run monitor's climb rule, RunLimits.h).
+        int flange[2] = {-1, -1}, lOverV[2] = {-1, -1};
     };
     std::vector<Wheelset> wheelsets;
     int energyStored = -1, energyInput = -1, energyDissipated = -1;  ///< cumulative [J]
@@ -87,6 +92,7 @@ struct ChannelLayout {
         if (roleIs(ChannelRole::WheelLift)) wheelLift.push_back(i);
         if (roleIs(ChannelRole::WheelUnloading)) wheelUnloading.push_back(i);
         if (roleIs(ChannelRole::LOverV)) lOverV.push_back(i);
+        if (roleIs(ChannelRole::TruckSideLOverV)) truckSideLOverV.push_back(i);
         if (roleIs(ChannelRole::CarBodyVerticalAccel)) carBodyVerticalAccel.push_back(i);
         if (roleIs(ChannelRole::CarBodyLateralAccel)) carBodyLateralAccel.push_back(i);
         if (roleIs(ChannelRole::EnergyStored)) energyStored = i;
@@ -124,6 +130,13 @@ public:
     }
     /// Groups already declared wheel-lift (and lateral) channels into a wheelset for the run monitor.
     void addWheelset(ChannelLayout::Wheelset w) { layout_.wheelsets.push_back(w); }
+    /// The wheelset whose left wheel's lift is channel `liftLeft`, or nullptr.
+    ChannelLayout::Wheelset* findWheelset(int liftLeft) {
+        if (liftLeft < 0) return nullptr;
+        for (auto& w : layout_.wheelsets)
+            if (w.liftLeft == liftLeft) return &w;
+        return nullptr;
+    }
 
     const ChannelLayout& getLayout() const { return layout_; }
     int size() const { return int(evaluators_.size()); }
@@ -177,6 +190,7 @@ struct HalfCarSample {
     double wheelLift[2] = {0, 0};  ///< [m]
     double wheelOffset[2] = {0, 0};   ///< tread − rail, lateral [m] (formulations with a wheelset lateral motion)
     double wheelLateral[2] = {0, 0};  ///< lateral contact force on the wheel [N] (the same formulations)
+    double wheelFlange[2] = {0, 0};   ///< flange normal force [N] (the creep-and-flange contact)
     double verticalAccel = 0, lateralAccel = 0;  ///< car-body CG, track axes [m/s²]
     double energyStored = 0, energyInput = 0, energyDissipated = 0;  ///< [J]
 };
@@ -198,19 +212,24 @@ void declareHalfCarBodyChannels(ChannelTable<Sample>& c) {
 }
 
 /// The equivalent wheelset's wheel loads (two wheels each) and lifts, left then
-/// right; then its lateral displacement when the formulation has one.
+/// right (each lift followed by its flange force when the formulation has flanges);
+/// then its lateral displacement when the formulation has one.
 template <class Sample>
-void declareEquivalentWheelsetChannels(ChannelTable<Sample>& c, bool hasLateral) {
+void declareEquivalentWheelsetChannels(ChannelTable<Sample>& c, bool hasLateral, bool hasFlange = false) {
     const double in = units::inch, lb = units::lbf;
     for (int side : {0, 1})
         c.add(std::string("wheels_F_") + (side == 0 ? "L" : "R"), "lb",
               ChannelRole::TruckSideWheelLoad | ChannelRole::SingleWheelLoad,
               [=](const Sample& s) { return s.wheel[side] / lb; });
     ChannelLayout::Wheelset w;
-    for (int side : {0, 1})
+    for (int side : {0, 1}) {
         (side == 0 ? w.liftLeft : w.liftRight) =
             c.add(std::string("wheel_lift_F1_") + (side == 0 ? "L" : "R"), "in", ChannelRole::WheelLift,
                   [=](const Sample& s) { return s.wheelLift[side] / in; });
+        if (hasFlange)
+            w.flange[side] = c.add(std::string("flange_F1_") + (side == 0 ? "L" : "R"), "lb",
+                                   [=](const Sample& s) { return s.wheelFlange[side] / lb; });
+    }
     if (hasLateral)
         w.lateral = c.add("wheelset_lateral_F1", "in", ChannelRole::WheelsetLateral,
                           [=](const Sample& s) { return (s.wheelOffset[0] + s.wheelOffset[1]) / 2 / in; });
@@ -227,9 +246,12 @@ void declareHalfCarFreightChannels(ChannelTable<Sample>& c, double staticWheelLo
         const std::string S = side == 0 ? "L" : "R";
         c.add("wheel_unloading_F1_" + S, "ratio", ChannelRole::WheelUnloading,
               [=](const Sample& s) { return calcWheelUnloading(s.wheel[side], staticWheelLoad); });
-        if (hasLateralForces)
-            c.add("l_over_v_F1_" + S, "ratio", ChannelRole::LOverV,
-                  [=](const Sample& s) { return calcLOverV(s.wheelLateral[side], s.wheel[side]); });
+        if (hasLateralForces) {
+            // Its wheel is a truck side's two: its L/V is the truck side's as well.
+            const int lv = c.add("l_over_v_F1_" + S, "ratio", ChannelRole::LOverV | ChannelRole::TruckSideLOverV,
+                                 [=](const Sample& s) { return calcLOverV(s.wheelLateral[side], s.wheel[side]); });
+            if (auto* w = c.findWheelset(c.getLayout().find("wheel_lift_F1_L_in"))) w->lOverV[side] = lv;
+        }
     }
     c.add("car_body_vertical_accel", "g", ChannelRole::CarBodyVerticalAccel,
           [](const Sample& s) { return s.verticalAccel / units::g; });

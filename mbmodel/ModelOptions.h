@@ -1,7 +1,8 @@
 #pragma once
 // What a model is built with besides the car and the track: speed, track entry, the
-// track's motion and the attribution switches. Simbody-free, so the scenario loader
+// track's motion, the attribution switches and the wheel–rail settings. Simbody-free, so the scenario loader
 // and everything that only reads scenarios does not include Simbody.
+#include "contacts/WheelRailLaws.h"
 #include "mbmodel/TrackInput.h"
 
 namespace rockroll {
@@ -32,6 +33,7 @@ struct ModelOptions {
     TrackEntry entry = TrackEntry::Lead;
     TrackMotion motion;                   ///< s(t); its speed is set from `speed` when left 0
     AttributionSwitches attribution;      ///< default: none
+    WheelRailSettings wheelRail;          ///< scenario [wheel_rail]
 };
 
 }  // namespace rockroll

@@ -60,6 +60,7 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
     for (size_t i = 0; i < specs.size(); ++i) {
         specs[i].unsprungGravity = a.unsprungGravity;
         specs[i].unsprungMassScale = a.unsprungMassScale;
+        specs[i].wheelRail = options_.wheelRail;
         trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBody_, p_CarBodyPlates[i], car_,
                                                   std::move(specs[i])));
     }
@@ -84,6 +85,7 @@ RailInputFunction RockingModel::makeRailInput(std::vector<double> trackOffsets) 
         RailHeights h;
         const double w = 1.0 / double(offsets.size());
         const double s = motion.calcDistance(t), V = motion.calcSpeed(t);
+        h.speed = V;
         for (double s0 : offsets) {
             const RailPoint p = track_.calcRails(s + s0);
             for (int i = 0; i < 2; ++i) {

@@ -21,7 +21,12 @@ double calcStaticRolloverAngle(const CarParameters& car) {
     return std::atan2(car.gauge / 2, cgHeight);
 }
 
-RunLimits resolveRunLimits(RunLimits l, const CarParameters& car) {
+RunLimits resolveRunLimits(RunLimits l, const CarParameters& car, const WheelRailSettings& wheelRail) {
+    l.flangeHeight = wheelRail.flangeHeight;
+    l.flangeClearance = wheelRail.flangewayClearance;
+    l.nadalLimit = wheelRail.lateral == LateralWheelRail::CreepAndFlange
+                       ? calcNadalLimit(wheelRail.flangeAngle, wheelRail.friction)
+                       : 0.0;
     if (l.wheelsOffTime == 0) l.wheelsOffTime = 2 * std::sqrt(2 * l.flangeHeight / units::g);
     if (l.rolloverAngle == 0) l.rolloverAngle = calcStaticRolloverAngle(car);
     if (l.energyRunawayFloor == 0) l.energyRunawayFloor = car.getCarBodyWeight() * units::inch;
@@ -49,7 +54,9 @@ double getMemoryLimitBytes() {
 
 RunGuard::RunGuard(const ChannelLayout& layout, const RunLimits& limits)
     : layout_(layout), limits_(limits), start_(std::chrono::steady_clock::now()),
-      airborneSince_(layout.wheelsets.size(), std::numeric_limits<double>::quiet_NaN()) {}
+      airborneSince_(layout.wheelsets.size(), std::numeric_limits<double>::quiet_NaN()),
+      climbingSince_(layout.wheelsets.size(), {std::numeric_limits<double>::quiet_NaN(),
+                                               std::numeric_limits<double>::quiet_NaN()}) {}
 
 void RunGuard::checkWallTime(double simTime) const {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -106,6 +113,24 @@ bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
                                             layout_.names[size_t(side == 0 ? ws.liftLeft : ws.liftRight)],
                                             lift[side] / units::inch, limits_.flangeHeight / units::inch,
                                             towardRail / units::inch, limits_.flangeClearance / units::inch));
+            }
+        }
+        // Flange climb: a wheel in flange contact whose own L/V, the rail's lateral force
+        // on it away from that rail over its vertical force, stays above Nadal's limit.
+        for (int side : {0, 1}) {
+            if (limits_.nadalLimit <= 0 || ws.flange[side] < 0 || ws.lOverV[side] < 0) continue;
+            const double towardOwnRail = side == 0 ? -ch(ws.lOverV[side]) : ch(ws.lOverV[side]);
+            double& since = climbingSince_[w][size_t(side)];
+            if (ch(ws.flange[side]) > 0 && towardOwnRail > limits_.nadalLimit) {
+                if (std::isnan(since)) since = t;
+                if (t - since > limits_.flangeClimbTime)
+                    return stop("derailed",
+                                fmt::format("flange climb: {} in flange contact with its L/V above Nadal's limit "
+                                            "{:.3f} for {:.3f} s (limit {:.3f} s; now {:.3f})",
+                                            layout_.names[size_t(ws.flange[side])], limits_.nadalLimit, t - since,
+                                            limits_.flangeClimbTime, towardOwnRail));
+            } else {
+                since = std::numeric_limits<double>::quiet_NaN();
             }
         }
         if (lift[0] > 0 && lift[1] > 0) {

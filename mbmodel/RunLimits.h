@@ -3,10 +3,12 @@
 // passed: derailment, overturning, runaway energy and non-finite values, and a
 // wall-time guard. Simbody-free; every time-domain model calls RunGuard once
 // per recorded sample. Defaults and their sources: docs/model.md, "Run limits".
+#include "contacts/WheelRailLaws.h"
 #include "mbmodel/CarParameters.h"
 #include "mbmodel/ChannelLayout.h"
 #include "mbmodel/TimeHistory.h"
 
+#include <array>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -15,13 +17,18 @@ namespace rockroll {
 
 struct RunLimits {
     bool enabled = true;
-    /// Wheel flange height above the tread: 1 in, the AAR-1B freight wheel
-    /// profile (AAR Manual of Standards and Recommended Practices, Section G).
+    /// Wheel flange height above the tread and the lateral travel of a wheelset
+    /// to flange contact: the scenario's [wheel_rail] values, copied here by
+    /// resolveRunLimits (WheelRailSettings; docs/model.md, "Wheel–rail contact").
     double flangeHeight = 1.0 * units::inch;
-    /// Lateral travel of a wheelset from the track centre line to flange
-    /// contact: 3/8 in, half the 3/4 in total free play of a new AAR wheelset
-    /// in standard 56.5 in gauge (assumed; docs/model.md).
     double flangeClearance = 0.375 * units::inch;
+    /// A wheel in flange contact whose own L/V stays above Nadal's limit longer
+    /// than this has climbed its rail: 50 ms, the AAR's wheel-climb duration
+    /// (docs/model.md, "Run limits").
+    double flangeClimbTime = 0.05;
+    /// Nadal's limit of the scenario's flange angle and μ (resolveRunLimits); 0:
+    /// the model has no single-wheel lateral force, and the climb rule is off.
+    double nadalLimit = 0;
     /// Both wheels of a wheelset off their rails longer than this is a
     /// derailment. 0 = the free-flight time for the flanges to rise clear of
     /// the rail heads and fall back, 2·√(2·h_f/g) (0.144 s for h_f = 1 in).
@@ -52,8 +59,10 @@ double estimateHistoryBytes(double duration, double outputRate, size_t channels)
 /// when the variable is set to anything else.
 double getMemoryLimitBytes();
 
-/// Replaces the "from the car" zeros with their values for this car.
-RunLimits resolveRunLimits(RunLimits limits, const CarParameters& car);
+/// Replaces the "from the car" zeros with their values for this car, and copies the
+/// flange data of the wheel–rail settings (Nadal's limit only for the creep-and-flange
+/// contact: the restraint gives every wheel of a wheelset the same L/V).
+RunLimits resolveRunLimits(RunLimits limits, const CarParameters& car, const WheelRailSettings& wheelRail);
 
 /// Watches a run's recorded samples. Derailment and overturning stop the run
 /// (RunResult::stop is set, the history is kept); non-finite values, runaway
@@ -73,6 +82,7 @@ private:
     const RunLimits limits_;
     const std::chrono::steady_clock::time_point start_;
     std::vector<double> airborneSince_;  ///< per wheelset; NaN while a wheel is on its rail
+    std::vector<std::array<double, 2>> climbingSince_;  ///< per wheel; NaN while below Nadal's limit
     double energy0_ = 0;
     bool first_ = true;
 };

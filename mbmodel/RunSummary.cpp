@@ -166,6 +166,9 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     const Extremes lv = maxAbsOverChannels(h, layout.lOverV, filter);
     r.maxLOverV = lv.filteredMax;
     r.rawMaxLOverV = lv.rawMax;
+    const Extremes tlv = maxAbsOverChannels(h, layout.truckSideLOverV, filter);
+    r.maxTruckSideLOverV = tlv.filteredMax;
+    r.rawMaxTruckSideLOverV = tlv.rawMax;
     const Extremes av = maxAbsOverChannels(h, layout.carBodyVerticalAccel, filter);
     r.maxCarBodyVerticalAccelG = av.filteredMax;
     r.rawMaxCarBodyVerticalAccelG = av.rawMax;
@@ -190,7 +193,14 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     RunSummary judged = r;
     judged.peakToPeakRollDeg = maxOf(roll, criteriaFrom) - minOf(roll, criteriaFrom);
     judged.maxWheelUnloading = calcUnloading(h, layout, filter, criteriaFrom).filteredMax;
-    judged.maxLOverV = maxAbsOverChannels(h, layout.lOverV, filter, criteriaFrom).filteredMax;
+    // A wheel's own L/V is judged only where each wheel has its own lateral force (the
+    // creep and flange contact, whose wheelsets record flange forces): the restraint
+    // shares one force by load, so both wheels of a wheelset show the same ratio.
+    bool ownLateral = false;
+    for (const auto& w : layout.wheelsets) ownLateral = ownLateral || w.flange[0] >= 0;
+    judged.maxLOverV = ownLateral ? maxAbsOverChannels(h, layout.lOverV, filter, criteriaFrom).filteredMax
+                                  : std::numeric_limits<double>::quiet_NaN();
+    judged.maxTruckSideLOverV = maxAbsOverChannels(h, layout.truckSideLOverV, filter, criteriaFrom).filteredMax;
     judged.maxCarBodyVerticalAccelG = maxAbsOverChannels(h, layout.carBodyVerticalAccel, filter, criteriaFrom).filteredMax;
     judged.maxCarBodyLateralAccelG = maxAbsOverChannels(h, layout.carBodyLateralAccel, filter, criteriaFrom).filteredMax;
     r.criteria = evaluateCriteria(judged, opt.criteria);
@@ -212,6 +222,7 @@ std::vector<Criterion> evaluateCriteria(const RunSummary& s, const CriteriaLimit
     return {{"roll_peak_to_peak", "deg", s.peakToPeakRollDeg, l.rollPeakToPeakDeg},
             {"wheel_unloading", "ratio", s.maxWheelUnloading, l.wheelUnloading},
             {"l_over_v", "ratio", s.maxLOverV, l.lOverV},
+            {"truck_side_l_over_v", "ratio", s.maxTruckSideLOverV, l.truckSideLOverV},
             {"car_body_vertical_accel", "g", s.maxCarBodyVerticalAccelG, l.carBodyVerticalAccelG},
             {"car_body_lateral_accel", "g", s.maxCarBodyLateralAccelG, l.carBodyLateralAccelG}};
 }

@@ -17,7 +17,11 @@ namespace rockroll {
 struct CriteriaLimits {
     double rollPeakToPeakDeg = 6;         ///< car-body roll, max − min [deg]
     double wheelUnloading = 0.9;          ///< largest (static − load)/static of any wheel
-    double lOverV = 1.0;                  ///< largest |L/V| of any wheel
+    /// Largest |L/V| of any single wheel; 0: Nadal's limit of the scenario's flange angle
+    /// and μ (resolved by the scenario run, scenarios/ScenarioRun.h).
+    double lOverV = 0;
+    /// Largest |ΣL/ΣV| of any truck side: 0.5 (docs/model.md, "Summary: freight fields and criteria").
+    double truckSideLOverV = 0.5;
     double carBodyVerticalAccelG = 0.9;   ///< largest |vertical acceleration| [g]
     double carBodyLateralAccelG = 0.75;   ///< largest |lateral acceleration| [g]
 };
@@ -89,6 +93,8 @@ struct RunSummary {
     // NaN: the model has no such channel (L/V without lateral wheel forces).
     double maxWheelUnloading = 0, rawMaxWheelUnloading = 0;  ///< (static − load)/static, filtered ≤ 1
     double maxLOverV = std::numeric_limits<double>::quiet_NaN(), rawMaxLOverV = std::numeric_limits<double>::quiet_NaN();
+    double maxTruckSideLOverV = std::numeric_limits<double>::quiet_NaN(),
+           rawMaxTruckSideLOverV = std::numeric_limits<double>::quiet_NaN();
     double maxCarBodyVerticalAccelG = 0, rawMaxCarBodyVerticalAccelG = 0;
     double maxCarBodyLateralAccelG = 0, rawMaxCarBodyLateralAccelG = 0;
     std::vector<TruckLoads> trucks;

@@ -118,6 +118,8 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         law.vertical = {n * scale * car_.wheelRailStiffness, d};
         law.lateralStiffness = n * scale * car_.wheelRailLateralStiffness;
         law.lateralDamping = calcBristleDamping(law.lateralStiffness, m, car_.lateralContactDampingRatio);
+        law.settings = spec_.wheelRail;
+        law.wheels = n;
         const std::array<Vec3, 2> tread{Vec3(0, car_.gauge / 2, -car_.wheelRadius),
                                         Vec3(0, -car_.gauge / 2, -car_.wheelRadius)};
         wheelRail_.push_back(&addCustomForce<WheelRailContact>(
@@ -197,7 +199,7 @@ void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
         c.add(fmt::format("wheels_{}_{}", T, kSideName[side]), "lb",
               lumped ? R::TruckSideWheelLoad | R::SingleWheelLoad : R::TruckSideWheelLoad, [=](const CarSample& s) {
                   double sum = 0;
-                  for (const auto& w : truck(s).wheels) sum += w.normal[side];
+                  for (const auto& w : truck(s).wheels) sum += w.vertical[side];
                   return sum / lb;
               });
     std::vector<ChannelLayout::Wheelset> wheelsets(wheelsets_.size());
@@ -205,10 +207,14 @@ void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
         for (int side : {kLeft, kRight}) {
             if (!lumped)
                 c.add(fmt::format("wheel_{}{}_{}", T, i + 1, kSideName[side]), "lb", R::SingleWheelLoad,
-                      [=](const CarSample& s) { return truck(s).wheels[i].normal[side] / lb; });
+                      [=](const CarSample& s) { return truck(s).wheels[i].vertical[side] / lb; });
             const int lift = c.add(fmt::format("wheel_lift_{}{}_{}", T, i + 1, kSideName[side]), "in", R::WheelLift,
                                    [=](const CarSample& s) { return truck(s).wheels[i].lift[side] / in; });
             (side == kLeft ? wheelsets[i].liftLeft : wheelsets[i].liftRight) = lift;
+            if (spec_.wheelRail.lateral == LateralWheelRail::CreepAndFlange)
+                wheelsets[i].flange[side] =
+                    c.add(fmt::format("flange_{}{}_{}", T, i + 1, kSideName[side]), "lb",
+                          [=](const CarSample& s) { return truck(s).wheels[i].flange[side] / lb; });
         }
     for (size_t i = 0; i < wheelsets_.size(); ++i) {
         wheelsets[i].lateral = c.add(fmt::format("wheelset_lateral_{}{}", T, i + 1), "in", R::WheelsetLateral,
@@ -223,19 +229,34 @@ void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
 void Truck::declareFreightChannels(ChannelTable<CarSample>& c, int index) const {
     const std::string& T = spec_.label;
     auto truck = [index](const CarSample& s) -> const TruckSample& { return s.trucks[index]; };
-    for (size_t i = 0; i < wheelsets_.size(); ++i)
+    for (size_t i = 0; i < wheelsets_.size(); ++i) {
+        ChannelLayout::Wheelset* layout =
+            c.findWheelset(c.getLayout().find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kLeft])));
         for (int side : {kLeft, kRight}) {
             const double staticLoad = calcStaticWheelLoad(int(i));
             c.add(fmt::format("wheel_unloading_{}{}_{}", T, i + 1, kSideName[side]), "ratio",
                   ChannelRole::WheelUnloading, [=](const CarSample& s) {
-                      return calcWheelUnloading(truck(s).wheels[i].normal[side], staticLoad);
+                      return calcWheelUnloading(truck(s).wheels[i].vertical[side], staticLoad);
                   });
-            c.add(fmt::format("l_over_v_{}{}_{}", T, i + 1, kSideName[side]), "ratio", ChannelRole::LOverV,
-                  [=](const CarSample& s) {
-                      const WheelRailForces& w = truck(s).wheels[i];
-                      return calcLOverV(w.lateral[side], w.normal[side]);
-                  });
+            // One equivalent wheelset: its wheel is the truck side's, and so is its L/V.
+            const bool lumped = wheelsets_.size() == 1;
+            const int lv = c.add(fmt::format("l_over_v_{}{}_{}", T, i + 1, kSideName[side]), "ratio",
+                                 lumped ? ChannelRole::LOverV | ChannelRole::TruckSideLOverV : ChannelRole::LOverV,
+                                 [=](const CarSample& s) {
+                                     const WheelRailForces& w = truck(s).wheels[i];
+                                     return calcLOverV(w.lateral[side], w.vertical[side]);
+                                 });
+            if (layout) layout->lOverV[side] = lv;
         }
+    }
+    if (wheelsets_.size() > 1)
+        for (int side : {kLeft, kRight})
+            c.add(fmt::format("truck_side_l_over_v_{}_{}", T, kSideName[side]), "ratio", ChannelRole::TruckSideLOverV,
+                  [=](const CarSample& s) {
+                      double lateral = 0, vertical = 0;
+                      for (const auto& w : truck(s).wheels) lateral += w.lateral[side], vertical += w.vertical[side];
+                      return calcLOverV(lateral, vertical);
+                  });
 }
 
 TruckSample Truck::calcSample(const State& s) const {

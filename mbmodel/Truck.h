@@ -35,6 +35,7 @@ struct TruckSpec {
     // Attribution switches (RockingModel.h, AttributionSwitches), wheelset bodies only.
     bool unsprungGravity = true;        ///< false: the model excludes the wheelsets from gravity
     double unsprungMassScale = 1;       ///< mass and inertia factor; the lost weight as a constant force
+    WheelRailSettings wheelRail;        ///< the wheel–rail contacts' lateral formulation and data
 };
 
 /// One truck's element forces and kinematics at one output time (Truck::calcSample), SI.

@@ -111,6 +111,7 @@ const std::vector<std::pair<ChannelRole, const char*>> kRoleNames{
     {ChannelRole::WheelsetLateral, "wheelset_lateral"},
     {ChannelRole::WheelUnloading, "wheel_unloading"},
     {ChannelRole::LOverV, "l_over_v"},
+    {ChannelRole::TruckSideLOverV, "truck_side_l_over_v"},
     {ChannelRole::CarBodyVerticalAccel, "car_body_vertical_accel"},
     {ChannelRole::CarBodyLateralAccel, "car_body_lateral_accel"},
     {ChannelRole::EnergyStored, "energy_stored"},

@@ -29,7 +29,8 @@ std::vector<std::string> getCommonSettings() {
     return {"description",  "car.base",      "car.file",        "car.name",          "track.amplitude",
             "track.rail_length", "track.rails", "track.mirror", "track.file",        "track.taper",
             "track.repeat", "track.measured", "run.speed",      "run.duration",      "run.model",
-            "run.filter_cutoff", "limits.*",  "criteria.*"};
+            "run.filter_cutoff", "limits.enabled", "limits.wheels_off_time", "limits.rollover_angle",
+            "limits.energy_runaway_fraction", "limits.max_wall_time", "limits.severe_separation", "criteria.*"};
 }
 
 std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unused) {

@@ -262,7 +262,7 @@ void PeriodicOrbitSolver::describe(PeriodicOrbit& o) const {
         opt.filterCutoffHz = sc.filterCutoffHz;
         opt.staticReference = staticReference_;
         opt.severeSeparationTime = sc.severeSeparationTime;
-        opt.criteria = sc.criteria;
+        opt.criteria = resolveCriteriaLimits(sc);
         opt.criteriaFromS = 0;
         RunSummary s = summarizeRun(o.run.result, o.run.channels, opt);
         s.model = o.run.summary.model;

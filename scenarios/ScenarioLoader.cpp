@@ -96,6 +96,12 @@ void checkSampleCount(const std::string& source, double duration, double outputR
 }
 }  // namespace
 
+CriteriaLimits resolveCriteriaLimits(const Scenario& sc) {
+    CriteriaLimits l = sc.criteria;
+    if (l.lOverV == 0) l.lOverV = calcNadalLimit(sc.wheelRail.flangeAngle, sc.wheelRail.friction);
+    return l;
+}
+
 void checkScenario(const Scenario& sc) {
     auto check = [&sc](const std::string& key, double value) {
         const ValueRange& range = getValueRange(key);
@@ -564,9 +570,9 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     readCar(root, source, sc);
     readTrack(root, source, sc);
     readRun(root, source, sc);
-    for (const char* table : {"integrator", "eom", "limits", "reduced", "attribution", "criteria"})
+    for (const char* table : {"integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "criteria"})
         readFieldTable(root, table, source, sc);
-    top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "criteria"});
+    top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "criteria"});
     sc.settingsSet = listKeys(root);
     return sc;
 }

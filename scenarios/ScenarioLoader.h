@@ -43,6 +43,7 @@ struct Scenario {
     double severeSeparationTime = 0.010;  ///< [limits] severe_separation [s]
     ReducedOptions reduced;            ///< [reduced] table: the reduced model's truck weight
     AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
+    WheelRailSettings wheelRail;       ///< [wheel_rail] table: lateral formulation, creep, flange
     CriteriaLimits criteria;           ///< [criteria] table: limits of the summary's criteria
 };
 
@@ -79,6 +80,10 @@ const std::vector<ValueRange>& getValueRanges();
 /// changed it) against its declared range and the cross-checks (filter cut-off below
 /// half the output rate): ScenarioError naming sc.source, the key, the value and the range.
 void checkScenario(const Scenario& sc);
+
+/// The scenario's criteria limits with the derived ones filled in: a single wheel's
+/// L/V limit left 0 is Nadal's limit of its [wheel_rail] flange angle and friction.
+CriteriaLimits resolveCriteriaLimits(const Scenario& sc);
 
 /// Refuses (ScenarioError) a run whose recorded history would exceed the memory limit
 /// (getMemoryLimitBytes, ROCKROLL_MAX_MEMORY_MB), with the estimate.

@@ -41,7 +41,8 @@ std::unique_ptr<RockingModel> makeScenarioModel(const Scenario& sc, const RunSta
 }
 
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const TrackMotion& motion) {
-    return EomHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.eom);
+    return EomHalfCarModel(sc.car, makeEquivalentWheelsetInput(TrackInput(sc.track), motion, sc.car.wheelbase), sc.eom,
+                           sc.wheelRail);
 }
 
 EomHalfCarModel makeScenarioEomModel(const Scenario& sc, const RunStart& start) {
@@ -65,6 +66,11 @@ void checkSwitchesApply(const Scenario& sc) {
                                         "every step of its fixed time step, or the key left out (docs/cli.md, \"Which "
                                         "model uses which key\")",
                                         sc.source, sc.run.outputRate, d.fixedOutputRateHz, sc.model));
+    if (sc.eom.equalLateralShares && sc.wheelRail.lateral != LateralWheelRail::Restraint)
+        throw ScenarioError(fmt::format("{}: key 'eom.equal_lateral_shares' = true: expected wheel_rail.lateral = "
+                                        "\"restraint\", not \"{}\" (it splits the restraint's force; the creep and "
+                                        "flange contact gives each wheel its own)",
+                                        sc.source, getLateralWheelRailName(sc.wheelRail.lateral)));
     const std::string multibody = fmt::format("{}", fmt::join(registry.getMultibodyNames(), " or "));
     if (!d.isMultibody() && !sc.attribution.unsprungGravity)
         throw ScenarioError(fmt::format("{}: key 'attribution.unsprung_gravity' = false: expected model {}, not \"{}\"",
@@ -107,7 +113,7 @@ ScenarioRun runScenario(const Scenario& given, const RunStart& start) {
     opt.filterCutoffHz = sc.filterCutoffHz;
     opt.staticReference = start.staticReference;
     opt.severeSeparationTime = sc.severeSeparationTime;
-    opt.criteria = sc.criteria;
+    opt.criteria = resolveCriteriaLimits(sc);
     const TrackMotion motion = makeTrackMotion(sc, start);
     // Criteria leave out the numerical devices only: a sweep point's speed ramp and
     // the level lead-in before the leading wheelset reaches the perturbation

@@ -138,10 +138,8 @@ std::vector<ScenarioField> makeSchema() {
     f.push_back(flag("eom.small_angles", "false", {RR_FLAG(eom.smallAngles)}));
     // [limits]: the run monitor's physical limits (mbmodel/RunLimits.h) and the severe-regime duration.
     f.push_back(flag("limits.enabled", "true", {RR_FLAG(run.limits.enabled)}));
-    f.push_back(quantity("limits.flange_height", Dimension::Length, "in", 0, 3 * in, true, false, "1 in",
-                         {RR_NUMBER(run.limits.flangeHeight)}));
-    f.push_back(quantity("limits.flange_clearance", Dimension::Length, "in", 0, 3 * in, false, false, "0.375 in",
-                         {RR_NUMBER(run.limits.flangeClearance)}));
+    f.push_back(quantity("limits.flange_climb_time", Dimension::Time, "s", 0, 10, true, false, "0.05 s",
+                         {RR_NUMBER(run.limits.flangeClimbTime)}));
     {
         // 0: the flanges' free-flight time; 0: the car's static rollover angle.
         ScenarioField off = quantity("limits.wheels_off_time", Dimension::Time, "s", 0, 10, true, false, "0 s",
@@ -159,6 +157,31 @@ std::vector<ScenarioField> makeSchema() {
                          {RR_NUMBER(run.limits.maxWallTime)}));
     f.push_back(quantity("limits.severe_separation", Dimension::Time, "s", 0, 1, false, false, "0.01 s",
                          {RR_NUMBER(severeSeparationTime)}));
+    // [wheel_rail]: the lateral wheel–rail formulation and its data (contacts/WheelRailLaws.h;
+    // defaults and sources: docs/model.md, "Wheel–rail contact").
+    {
+        ScenarioField lateral{};
+        lateral.key = "wheel_rail.lateral";
+        lateral.kind = FieldKind::Choice;
+        lateral.defaultText = "restraint";
+        lateral.getText = [](const Scenario& s) { return std::string(getLateralWheelRailName(s.wheelRail.lateral)); };
+        lateral.setText = [](Scenario& s, const std::string& v) { s.wheelRail.lateral = *findLateralWheelRail(v); };
+        lateral.getChoices = [] {
+            return std::vector<std::string>{getLateralWheelRailName(LateralWheelRail::Restraint),
+                                            getLateralWheelRailName(LateralWheelRail::CreepAndFlange)};
+        };
+        f.push_back(lateral);
+    }
+    f.push_back(quantity("wheel_rail.friction", Dimension::Dimensionless, "", 0, 1, true, false, "0.5",
+                         {RR_NUMBER(wheelRail.friction)}));
+    f.push_back(quantity("wheel_rail.creep_coefficient", Dimension::Force, "N", 1e4, 1e9, false, false, "1e7 N",
+                         {RR_NUMBER(wheelRail.creepCoefficient)}));
+    f.push_back(quantity("wheel_rail.flange_angle", Dimension::Angle, "deg", 45 * units::degree, 89 * units::degree,
+                         false, false, "75 deg", {RR_NUMBER(wheelRail.flangeAngle)}));
+    f.push_back(quantity("wheel_rail.flangeway_clearance", Dimension::Length, "in", 0, 3 * in, false, false,
+                         "0.375 in", {RR_NUMBER(wheelRail.flangewayClearance)}));
+    f.push_back(quantity("wheel_rail.flange_height", Dimension::Length, "in", 0, 3 * in, true, false, "1 in",
+                         {RR_NUMBER(wheelRail.flangeHeight)}));
     // [reduced], [attribution]
     f.push_back(flag("reduced.truck_weight", "false", {RR_FLAG(reduced.truckWeight)}));
     f.push_back(flag("attribution.unsprung_gravity", "true", {RR_FLAG(attribution.unsprungGravity)}));
@@ -178,8 +201,15 @@ std::vector<ScenarioField> makeSchema() {
     }
     f.push_back(quantity("criteria.wheel_unloading", Dimension::Dimensionless, "", 0, 1, true, false, "0.9",
                          {RR_NUMBER(criteria.wheelUnloading)}));
-    f.push_back(quantity("criteria.l_over_v", Dimension::Dimensionless, "", 0, 10, true, false, "1",
-                         {RR_NUMBER(criteria.lOverV)}));
+    {
+        // 0: Nadal's limit of [wheel_rail] flange_angle and friction.
+        ScenarioField lv = quantity("criteria.l_over_v", Dimension::Dimensionless, "", 0, 10, true, false, "0",
+                                    {RR_NUMBER(criteria.lOverV)});
+        lv.zeroIsDerived = true;
+        f.push_back(lv);
+    }
+    f.push_back(quantity("criteria.truck_side_l_over_v", Dimension::Dimensionless, "", 0, 10, true, false, "0.5",
+                         {RR_NUMBER(criteria.truckSideLOverV)}));
     f.push_back(quantity("criteria.car_body_vertical_accel_g", Dimension::Dimensionless, "", 0, 10, true, false, "0.9",
                          {RR_NUMBER(criteria.carBodyVerticalAccelG)}));
     f.push_back(quantity("criteria.car_body_lateral_accel_g", Dimension::Dimensionless, "", 0, 10, true, false, "0.75",
@@ -198,7 +228,9 @@ const std::vector<ScenarioField>& getScenarioSchema() {
 const char* findRenamedKey(std::string_view oldKey) {
     static const std::pair<const char*, const char*> renamed[] = {
         {"attribution.truck_gravity", "attribution.unsprung_gravity"},
-        {"attribution.truck_mass_scale", "attribution.unsprung_mass_scale"}};
+        {"attribution.truck_mass_scale", "attribution.unsprung_mass_scale"},
+        {"limits.flange_height", "wheel_rail.flange_height"},
+        {"limits.flange_clearance", "wheel_rail.flangeway_clearance"}};
     for (const auto& [from, to] : renamed)
         if (oldKey == from) return to;
     return nullptr;

@@ -431,6 +431,7 @@ TEST(Validate, CriteriaSectionJudgesEachSweepByItsOwnLimits) {
     p.summary.maxWheelUnloading = 0.5;
     p.summary.maxCarBodyVerticalAccelG = 0.5;
     p.summary.maxCarBodyLateralAccelG = 0.1;
+    p.summary.maxTruckSideLOverV = 0.3;
     // As summarizeRun judges them; the section re-judges these values by each sweep's limits.
     p.summary.criteria = evaluateCriteria(p.summary, CriteriaLimits{});
     SweepResult ownDefaults;
@@ -440,9 +441,10 @@ TEST(Validate, CriteriaSectionJudgesEachSweepByItsOwnLimits) {
     SweepResult tight = ownDefaults;
     tight.c.car = "car-b";
     tight.criteria.carBodyVerticalAccelG = 0.4;
+    ownDefaults.criteria.lOverV = tight.criteria.lOverV = 1.13;  // resolved, as section 2's sweeps are
     const std::string md = makeCriteriaSection(s, {ownDefaults, tight});
-    EXPECT_NE(md.find("| car-a | 0.75 | halfcar | up | none | none | n/e | none | none |"), std::string::npos) << md;
-    EXPECT_NE(md.find("| car-b* | 0.75 | halfcar | up | none | none | n/e | 15 | none |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| car-a | 0.75 | halfcar | up | none | none | n/e | none | none | none |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| car-b* | 0.75 | halfcar | up | none | none | n/e | none | 15 | none |"), std::string::npos) << md;
     EXPECT_NE(md.find("car-b: car_body_vertical_accel ≤ 0.4 g;"), std::string::npos) << md;
     EXPECT_EQ(md.find("car-a:"), std::string::npos) << md;
 }

@@ -190,7 +190,7 @@ TEST(WheelRailContact, LiftedWheelCarriesNothingAndLateralGoesThroughTheOther) {
     Rig rig;
     const double k = 8.8e8, g = 0.7176, r = 0.419;
     auto* wr = new WheelRailContact(rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
-                                    [](double) { return RailHeights{}; }, {{k, 0}, 3.5e8, 0});
+                                    [](double) { return RailHeights{}; }, {{k, 0}, 3.5e8, 0, {}, 1});
     SimTK::Force::Custom(rig.forces, wr);
     SimTK::State s = rig.init();
     Rig::place(rig.upper, s, 0, r - 1e-4);
@@ -285,4 +285,52 @@ TEST(DynamicsCache, CachedEvaluationEqualsFreshAndNeverGoesStale) {
     EXPECT_NE(afterU, beforeU);
     rig.system.realize(s, SimTK::Stage::Acceleration);
     EXPECT_EQ(w->calcDissipatedPower(s), afterU);
+}
+
+TEST(WheelRailContact, AWheelsetPushedHarderThanMuNSlidesUntilItsFlangeTakesTheLoad) {
+    Rig rig;
+    const double k = 8.8e8, g = 0.7176, r = 0.419;
+    WheelRailLaw law{{k, 5}, 0, 0, {}, 1};
+    law.settings.lateral = LateralWheelRail::CreepAndFlange;  // μ 0.5, 75°, 0.375 in clearance
+    const double V = 7.0;
+    auto* wr = new WheelRailContact(rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
+                                    [V](double) {
+                                        RailHeights h;
+                                        h.speed = V;
+                                        return h;
+                                    },
+                                    law);
+    SimTK::Force::Custom(rig.forces, wr);
+    const double N = 1e5, L = 0.6 * N;  // lateral push above μ·N
+    SimTK::Force::ConstantForce(rig.forces, rig.upper, Vec3(0), Vec3(0, L, -N));
+    SimTK::State s = rig.init();
+    Rig::place(rig.upper, s, 0, r - N / (2 * k));
+    Rig::place(rig.lower, s, 0, -1);
+    SimTK::RungeKuttaMersonIntegrator integ(rig.system);
+    integ.setAccuracy(1e-6);
+    SimTK::TimeStepper ts(rig.system, integ);
+    ts.initialize(s);
+    // Sliding: toward the left rail (+y), its creep forces oppose it, and no flange yet.
+    ts.stepTo(0.005);
+    rig.system.realize(integ.getState(), SimTK::Stage::Dynamics);
+    WheelRailForces f = wr->calcForces(integ.getState());
+    EXPECT_GT(rig.upper.getOneU(integ.getState(), 1), 0.0);
+    EXPECT_LT(f.creep[0] + f.creep[1], 0.0);
+    EXPECT_EQ(f.flange[0], 0.0);
+    // At rest against the left flange: the flange carries the push, and its vertical part
+    // is the rail's too.
+    ts.stepTo(1.0);
+    const SimTK::State& end = integ.getState();
+    rig.system.realize(end, SimTK::Stage::Dynamics);
+    f = wr->calcForces(end);
+    EXPECT_NEAR(rig.upper.getOneU(end, 1), 0.0, 1e-4);
+    EXPECT_GT(f.offset[0], law.settings.flangewayClearance);
+    EXPECT_GT(f.flange[0], 0.0);
+    EXPECT_EQ(f.flange[1], 0.0);
+    EXPECT_NEAR(f.lateral[0] + f.lateral[1], -L, 1e-3 * L);
+    EXPECT_NEAR(f.vertical[0] + f.vertical[1], N, 1e-3 * N);
+    // The flange's normal force: its lateral part balances what creep does not.
+    EXPECT_NEAR(f.flange[0] * std::sin(law.settings.flangeAngle), L + f.creep[0] + f.creep[1], 1e-3 * L);
+    // The left wheel's own L/V is not the right one's.
+    EXPECT_GT(std::abs(f.lateral[0] / f.vertical[0] - f.lateral[1] / f.vertical[1]), 0.1);
 }

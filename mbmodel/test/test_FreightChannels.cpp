@@ -135,7 +135,7 @@ TEST(FreightChannels, UnloadingIsOneMinusLoadOverStaticLoad) {
 TEST(FreightChannels, LOverVIsTheLateralOverTheVerticalContactForceOfEachWheel) {
     // Simbody half car, a state off equilibrium (wheelset shifted, bodies rolled), against the contact's own forces.
     const Scenario sc = makeCase("halfcar", 0.75, 16.5, 1);
-    const HalfCarModel model(sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc), {}});
+    const HalfCarModel model(sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc), {}, sc.wheelRail});
     SimTK::State s = model.makeStaticState();
     model.getTruck(0).getWheelset(0).setOneQ(s, 1, 0.002);
     model.getTruck(0).getWheelset(0).setOneU(s, 1, 0.05);
@@ -242,6 +242,7 @@ TEST(FreightChannels, SummaryAndHistoryCarryTheFreightFieldsAndReadBack) {
     const nlohmann::json j = nlohmann::json::parse(js);
     const RunSummary& s = run.summary;
     EXPECT_DOUBLE_EQ(j.at("max_l_over_v").get<double>(), s.maxLOverV);
+    EXPECT_DOUBLE_EQ(j.at("max_truck_side_l_over_v").get<double>(), s.maxTruckSideLOverV);
     EXPECT_DOUBLE_EQ(j.at("max_car_body_vertical_accel_g").get<double>(), s.maxCarBodyVerticalAccelG);
     EXPECT_DOUBLE_EQ(j.at("max_car_body_lateral_accel_g").get<double>(), s.maxCarBodyLateralAccelG);
     EXPECT_DOUBLE_EQ(j.at("max_wheel_unloading").get<double>(), s.maxWheelUnloading);
@@ -255,8 +256,14 @@ TEST(FreightChannels, SummaryAndHistoryCarryTheFreightFieldsAndReadBack) {
     for (size_t i = 0; i < criteria.size(); ++i) {
         EXPECT_EQ(criteria[i].at("name"), s.criteria[i].name);
         EXPECT_EQ(criteria[i].at("unit"), s.criteria[i].unit);
-        EXPECT_DOUBLE_EQ(criteria[i].at("value").get<double>(), s.criteria[i].value);
         EXPECT_DOUBLE_EQ(criteria[i].at("limit").get<double>(), s.criteria[i].limit);
+        if (!s.criteria[i].evaluated()) {
+            // The restraint's single-wheel L/V, both wheels of a wheelset one ratio: not evaluated.
+            EXPECT_EQ(s.criteria[i].name, "l_over_v");
+            EXPECT_TRUE(criteria[i].at("value").is_null());
+            continue;
+        }
+        EXPECT_DOUBLE_EQ(criteria[i].at("value").get<double>(), s.criteria[i].value);
         EXPECT_EQ(criteria[i].at("pass").get<bool>(), s.criteria[i].passes());
     }
     EXPECT_EQ(j.at("criteria_pass").get<bool>(), s.passesCriteria());
@@ -306,17 +313,20 @@ TEST(FreightCriteria, ValueAtOrBelowTheLimitPassesAboveFailsUnevaluatedIsIgnored
     s.peakToPeakRollDeg = 6.0;
     s.maxWheelUnloading = 0.95;
     s.maxLOverV = std::numeric_limits<double>::quiet_NaN();
+    s.maxTruckSideLOverV = 0.3;
     s.maxCarBodyVerticalAccelG = 0.2;
     s.maxCarBodyLateralAccelG = 0.8;
     CriteriaLimits limits;
+    limits.lOverV = 1.13;  // resolved (resolveCriteriaLimits): Nadal's limit
     s.criteria = evaluateCriteria(s, limits);
-    ASSERT_EQ(s.criteria.size(), 5u);
+    ASSERT_EQ(s.criteria.size(), 6u);
     EXPECT_TRUE(s.criteria[0].passes());   // 6 deg at a 6 deg limit
     EXPECT_FALSE(s.criteria[1].passes());  // 0.95 > 0.9
     EXPECT_FALSE(s.criteria[2].evaluated());
     EXPECT_FALSE(s.criteria[2].passes());
-    EXPECT_TRUE(s.criteria[3].passes());
-    EXPECT_FALSE(s.criteria[4].passes());  // 0.8 g > 0.75 g
+    EXPECT_TRUE(s.criteria[3].passes());   // truck side 0.3 ≤ 0.5
+    EXPECT_TRUE(s.criteria[4].passes());
+    EXPECT_FALSE(s.criteria[5].passes());  // 0.8 g > 0.75 g
     EXPECT_FALSE(s.passesCriteria());
     EXPECT_EQ(s.describeCriteria(), "FAIL wheel_unloading,car_body_lateral_accel (not evaluated: l_over_v)");
     limits.wheelUnloading = 1;
@@ -327,6 +337,19 @@ TEST(FreightCriteria, ValueAtOrBelowTheLimitPassesAboveFailsUnevaluatedIsIgnored
     s.maxLOverV = 0.5;
     s.criteria = evaluateCriteria(s, limits);
     EXPECT_EQ(s.describeCriteria(), "pass");
+    s.maxTruckSideLOverV = 0.6;
+    s.criteria = evaluateCriteria(s, limits);
+    EXPECT_EQ(s.describeCriteria(), "FAIL truck_side_l_over_v");
+}
+
+TEST(FreightCriteria, TheSingleWheelLimitLeftZeroIsNadalsOfTheWheelRailSettings) {
+    Scenario sc = parseScenario(test_cases::kMinimalScenarioToml, "t.toml");
+    EXPECT_EQ(sc.criteria.lOverV, 0.0);
+    EXPECT_DOUBLE_EQ(resolveCriteriaLimits(sc).lOverV, calcNadalLimit(75 * units::degree, 0.5));
+    sc.wheelRail.friction = 0.3;
+    EXPECT_DOUBLE_EQ(resolveCriteriaLimits(sc).lOverV, calcNadalLimit(75 * units::degree, 0.3));
+    sc.criteria.lOverV = 0.9;
+    EXPECT_EQ(resolveCriteriaLimits(sc).lOverV, 0.9);
 }
 
 TEST(FreightCriteria, ScenarioTableSetsValidatesAndWritesTheLimits) {

@@ -39,7 +39,7 @@ struct Layout {
     }
 };
 
-RunLimits resolvedLimits() { return resolveRunLimits(RunLimits{}, makeCarParameters("70ton-loaded")); }
+RunLimits resolvedLimits() { return resolveRunLimits(RunLimits{}, makeCarParameters("70ton-loaded"), WheelRailSettings{}); }
 
 TEST(RunLimits, StaticRolloverAngleFromGeometry) {
     const CarParameters car = makeCarParameters("70ton-loaded");
@@ -233,21 +233,20 @@ std::string withLimits(const std::string& limits) {
 
 TEST(RunLimits, LimitsTableIsReadAndRangeChecked) {
     const Scenario sc = parseScenario(
-        withLimits("flange_height = \"25 mm\"\nflange_clearance = \"0.5 in\"\nwheels_off_time = \"200 ms\"\n"
+        withLimits("flange_climb_time = \"25 ms\"\nwheels_off_time = \"200 ms\"\n"
                    "rollover_angle = \"15 deg\"\nmax_wall_time = \"60 s\"\nsevere_separation = \"20 ms\"\n"
                    "energy_runaway_fraction = 0.25\nenabled = true"),
         "limits.toml");
-    EXPECT_DOUBLE_EQ(sc.run.limits.flangeHeight, 0.025);
-    EXPECT_DOUBLE_EQ(sc.run.limits.flangeClearance, 0.5 * units::inch);
+    EXPECT_DOUBLE_EQ(sc.run.limits.flangeClimbTime, 0.025);
     EXPECT_DOUBLE_EQ(sc.run.limits.wheelsOffTime, 0.2);
     EXPECT_DOUBLE_EQ(sc.run.limits.rolloverAngle, 15 * units::degree);
     EXPECT_DOUBLE_EQ(sc.run.limits.maxWallTime, 60);
     EXPECT_DOUBLE_EQ(sc.severeSeparationTime, 0.02);
     EXPECT_DOUBLE_EQ(sc.run.limits.energyRunawayFraction, 0.25);
-    for (const char* bad : {"flange_height = \"-1 in\"", "flange_height = \"0 in\"", "flange_height = \"1 ft\"",
+    for (const char* bad : {"flange_climb_time = \"-1 s\"", "flange_climb_time = \"0 s\"", "flange_climb_time = \"11 s\"",
                             "rollover_angle = \"95 deg\"", "wheels_off_time = \"0 s\"", "max_wall_time = \"-5 s\"",
                             "severe_separation = \"2 s\"", "energy_runaway_fraction = nan",
-                            "energy_runaway_fraction = 0", "flange_height = 1", "flange_hieght = \"1 in\""}) {
+                            "energy_runaway_fraction = 0", "flange_climb_time = 1", "flange_clmb_time = \"1 s\""}) {
         try {
             parseScenario(withLimits(bad), "limits.toml");
             ADD_FAILURE() << "accepted " << bad;

@@ -30,14 +30,14 @@ def test_a_bare_key_overrides_the_one_key_it_names():
 
 def test_full_dotted_keys_and_typed_values():
     sc = rockroll.load(LOADED, **{"run.model": "halfcar", "track.rails": 4, "track.mirror": True,
-                                  "integrator.accuracy": 1e-5, "limits.flange_height": "1 in"})
+                                  "integrator.accuracy": 1e-5, "limits.flange_climb_time": "0.05 s"})
     assert sc.model == "halfcar"
     assert sc.overrides == [("run.model", "halfcar"), ("track.rails", "4"), ("track.mirror", "true"),
-                            ("integrator.accuracy", "1e-05"), ("limits.flange_height", "1 in")]
+                            ("integrator.accuracy", "1e-05"), ("limits.flange_climb_time", "0.05 s")]
     toml = tomllib.loads(sc.to_toml())
     assert toml["track"]["rails"] == 4 and toml["track"]["mirror"] is True
     assert toml["integrator"]["accuracy"] == 1e-5
-    assert toml["limits"]["flange_height"] == "0.0254 m"  # [limits] was not in the file: created
+    assert toml["limits"]["flange_climb_time"] == "0.05 s"  # [limits] was not in the file: created
 
 
 def test_scenario_keys_list_the_schema():

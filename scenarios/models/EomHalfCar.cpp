@@ -20,7 +20,7 @@ public:
     }
     RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const override {
         const EomRunSettings settings{sc.run.duration, sc.run.outputRate, sc.run.integrator.accuracy,
-                                      resolveRunLimits(sc.run.limits, sc.car)};
+                                      resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail)};
         if (y0.empty()) return simulateEom(model_, settings);
         if (y0.size() != size_t(EomHalfCarModel::kNumStates))
             throw std::invalid_argument("eom model: initial state has the wrong size");
@@ -46,7 +46,7 @@ ModelDescriptor describeEomHalfCarModel() {
     d.description = "equation-of-motion half car, the Simbody half car's equations written out (report §4.1)";
     // CVODE BDF at the scenario's accuracy; its own method and step control (bespoke/EomSimulation.h).
     d.settings = getCommonSettings();
-    for (const char* key : {"run.output_rate", "integrator.accuracy", "eom.*"}) d.settings.emplace_back(key);
+    for (const char* key : {"run.output_rate", "integrator.accuracy", "eom.*", "wheel_rail.*", "limits.flange_climb_time"}) d.settings.emplace_back(key);
     const std::vector<std::string> car = getCarSettings(kFullCarOnlyParameters);  // a half car: no pitch, no yaw
     d.settings.insert(d.settings.end(), car.begin(), car.end());
     d.make = [](const Scenario& sc, const TrackMotion& motion) {

@@ -15,7 +15,7 @@ public:
     const ChannelLayout& getChannels() const override { return model_.getChannels(); }
     std::vector<double> calcStaticState() const override { return model_.calcStaticState(); }
     RunResult simulate(const Scenario& sc, const std::vector<double>& y0) const override {
-        return simulateReduced(model_, sc.run.duration, nullptr, y0, resolveRunLimits(sc.run.limits, sc.car));
+        return simulateReduced(model_, sc.run.duration, nullptr, y0, resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail));
     }
 
     /// The flat layout of ReducedHalfCarModel::calcStaticState: [θ, y, z], their rates,
@@ -42,7 +42,7 @@ ModelDescriptor describeReducedModel() {
     d.description = "the report's reduced half car: massless truck, fixed-step RK4 at 0.005 s (report §2.2)";
     d.masslessTruck = true;
     d.settings = getCommonSettings();
-    for (const char* key : {"run.output_rate", "reduced.*"}) d.settings.emplace_back(key);
+    for (const char* key : {"run.output_rate", "reduced.*", "wheel_rail.flange_height"}) d.settings.emplace_back(key);
     // A half car with a massless truck and rigid contacts (report §2.2, bespoke/TruckEquilibrium.h):
     // no truck inertias, contact stiffnesses or contact damping.
     std::vector<std::string_view> unused(kFullCarOnlyParameters);

@@ -15,7 +15,7 @@ std::vector<double> SimbodyTimeDomainModel::calcStaticState() const {
 
 RunResult SimbodyTimeDomainModel::simulate(const Scenario& sc, const std::vector<double>& y0) const {
     RunSettings settings = sc.run;
-    settings.limits = resolveRunLimits(sc.run.limits, sc.car);
+    settings.limits = resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail);
     return rockroll::simulate(*model_, settings, y0);
 }
 
@@ -29,7 +29,7 @@ std::vector<StateKind> SimbodyTimeDomainModel::getStateKinds() const {
 }
 
 ModelOptions makeModelOptions(const Scenario& sc, const TrackMotion& motion) {
-    return ModelOptions{sc.speed, sc.entry, motion, sc.attribution};
+    return ModelOptions{sc.speed, sc.entry, motion, sc.attribution, sc.wheelRail};
 }
 
 namespace {
@@ -39,7 +39,7 @@ ModelDescriptor describeSimbodyCar(std::string name, std::string description) {
     d.name = std::move(name);
     d.description = std::move(description);
     d.settings = getCommonSettings();
-    for (const char* key : {"run.output_rate", "integrator.*", "attribution.*"}) d.settings.emplace_back(key);
+    for (const char* key : {"run.output_rate", "integrator.*", "attribution.*", "wheel_rail.*", "limits.flange_climb_time"}) d.settings.emplace_back(key);
     // The half car's truck is two-dimensional: no pitch, no yaw (mbmodel/Truck.cpp).
     const std::vector<std::string> car = getCarSettings(
         std::is_same_v<Car, FullCarModel> ? std::vector<std::string_view>{} : kFullCarOnlyParameters);

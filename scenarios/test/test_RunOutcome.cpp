@@ -71,12 +71,30 @@ TEST(RunOutcome, SigtermAndSigintExitWith130) {
     }
 }
 
+TEST(RunOutcome, AFlangeClimbStopsTheRunWithExitFive) {
+    const fs::path dir = makeTempDir();
+    const int code = runCli("run " + kScenarios + "/70ton-loaded-flange-climb.toml --out '" + (dir / "out").string() + "'",
+                            dir / "err.txt");
+    EXPECT_EQ(code, 5) << readTextFile(dir / "err.txt");
+    const auto j = nlohmann::json::parse(readTextFile(dir / "out" / "summary.json"));
+    EXPECT_EQ(j["regime"], "derailed");
+    const std::string reason = j["stop_reason"];
+    EXPECT_NE(reason.find("flange climb: flange_F1_"), std::string::npos) << reason;
+    EXPECT_NE(reason.find("Nadal's limit 0.141"), std::string::npos) << reason;
+    // The same case with the report's restraint runs to its end: no flange, no climb rule.
+    EXPECT_EQ(runCli("run " + kScenarios + "/70ton-loaded-flange-climb.toml --set wheel_rail.lateral=restraint --out '" +
+                         (dir / "restraint").string() + "'",
+                     dir / "err2.txt"),
+              0)
+        << readTextFile(dir / "err2.txt");
+}
+
 TEST(RunOutcome, FromSummaryReproducesTheRunByteForByte) {
     const fs::path dir = makeTempDir();
     // A scenario with a car override and a limit, and command-line overrides on top.
     std::string toml = readTextFile(kScenarios + "/70ton-loaded.toml");
     toml.replace(toml.find("[track]"), 7, "side_bearing_clearance = \"0.1875 in\"\nspring_vertical_rate = \"28 kN/mm\"\n\n[track]");
-    toml += "\n[limits]\nflange_clearance = \"0.4 in\"\n";
+    toml += "\n[limits]\nflange_climb_time = \"0.04 s\"\n\n[wheel_rail]\nflangeway_clearance = \"0.4 in\"\n";
     std::ofstream(dir / "case.toml") << toml;
     ASSERT_EQ(runCli("run '" + (dir / "case.toml").string() + "' --model halfcar --speed-mph 15.3 --amplitude-in 0.8 "
                      "--duration-s 3 --out '" + (dir / "a").string() + "'",

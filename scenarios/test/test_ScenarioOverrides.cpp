@@ -79,11 +79,11 @@ TEST(ScenarioOverrides, FullKeysSetValuesAsTheFileWould) {
 
 TEST(ScenarioOverrides, ReplaceAValueInTheFileAndCreateAMissingTable) {
     const std::string text = test_cases::replaceOnce(kCase, "base = \"70ton-loaded\"", "base = \"70ton-loaded\"\ngib_clearance = \"1 in\"");
-    const Scenario sc = withOverrides({{"car.gib_clearance", "0.5 in"}, {"limits.flange_height", "1.5 in"},
+    const Scenario sc = withOverrides({{"car.gib_clearance", "0.5 in"}, {"wheel_rail.flange_height", "1.5 in"},
                                        {"eom.small_angles", "true"}},
                                       OverrideKeys::FullOnly, text);
     EXPECT_EQ(sc.car.gibClearance, 0.5 * 0.0254);
-    EXPECT_EQ(sc.run.limits.flangeHeight, 1.5 * 0.0254);
+    EXPECT_EQ(sc.wheelRail.flangeHeight, 1.5 * 0.0254);
     EXPECT_TRUE(sc.eom.smallAngles);
     EXPECT_EQ(sc.carOverrides.size(), 1u);  // the file's key, replaced in place
     // A later override of the same key wins.
@@ -177,6 +177,7 @@ TEST(ScenarioOverrides, SchemaIsWhatTheLoaderReadsAndTheWriterWrites) {
     Scenario sc = getDefaultScenario();
     sc.run.limits.wheelsOffTime = 0.5;
     sc.run.limits.rolloverAngle = 0.3;
+    sc.criteria.lOverV = 1.1;
     sc.track.measured = {{0, 0, 0}, {1, 0.01, 0}};  // the writer gives taper and repeat with a measured table
     std::set<std::string> written;
     collectKeys(toml::parse(formatScenarioToml(sc)), "", written);

@@ -97,8 +97,12 @@ ranged = {
     ("track", "amplitude"): ['"50 in"', '"-1 in"', '"nan in"', '"inf in"', "0.75", '"0.75 mph"', '"3.1 in"'],
     ("track", "rail_length"): ['"0 ft"', '"-39 ft"', '"nan ft"', '"1e6 ft"', '"39 s"', "39"],
     ("track", "rails"): ["4294967297", "-1", "1.5", '"4"', "nan", "9223372036854775807", "2000000", "inf"],
-    ("limits", "flange_height"): ['"0 in"', '"4 in"', '"nan in"'],
-    ("limits", "flange_clearance"): ['"-1 in"', '"4 in"'],
+    ("limits", "flange_climb_time"): ['"0 s"', '"11 s"', '"nan s"'],
+    ("wheel_rail", "flange_height"): ['"0 in"', '"4 in"', '"nan in"'],
+    ("wheel_rail", "flangeway_clearance"): ['"-1 in"', '"4 in"'],
+    ("wheel_rail", "friction"): ["0", "1.5", "nan", '"0.5 in"'],
+    ("wheel_rail", "creep_coefficient"): ['"1 N"', '"1e10 N"', '"nan N"', '"1e7 in"', "1e7"],
+    ("wheel_rail", "flange_angle"): ['"30 deg"', '"90 deg"', '"nan deg"', "75"],
     ("limits", "wheels_off_time"): ['"0 s"', '"11 s"', '"nan s"'],
     ("limits", "rollover_angle"): ['"0 deg"', '"91 deg"', '"inf deg"'],
     ("limits", "energy_runaway_fraction"): ["0", "101", "nan"],
@@ -129,6 +133,8 @@ file_case("run-model-number", "run", "model", "5", "one of")
 file_case("integrator-method-unknown", "integrator", "method", '"euler"', "one of")
 file_case("integrator-method-number", "integrator", "method", "3", "one of")
 file_case("track-entry-unknown", "track", "entry", '"sideways"', "lead")
+file_case("wheel_rail-lateral-unknown", "wheel_rail", "lateral", '"flanges"', "one of")
+file_case("limits-flange_height-renamed", "limits", "flange_height", '"1 in"', "wheel_rail.flange_height")
 file_case("track-mirror-string", "track", "mirror", '"yes"', "true or false")
 file_case("eom-linear_springs-number", "eom", "linear_springs", '"no"', "true or false")
 file_case("reduced-truck_weight-number", "reduced", "truck_weight", "1", "true or false")
