@@ -34,6 +34,10 @@ double calcLateralCreepForce(double slipVelocity, double forwardSpeed, double no
 }
 
 namespace {
+UnilateralContactLaw makeFlangeLaw(const UnilateralContactLaw& tread, const WheelRailSettings& w) {
+    return {tread.stiffness * w.flangeStiffnessScale, tread.dissipation};
+}
+
 double calcPenetration(double towardRail, double lift, const WheelRailSettings& w) {
     if (lift >= w.flangeHeight) return 0;
     return (towardRail - w.flangewayClearance) * std::sin(w.flangeAngle) - lift * std::cos(w.flangeAngle);
@@ -43,23 +47,24 @@ double calcPenetration(double towardRail, double lift, const WheelRailSettings& 
 FlangeForces calcFlangeForces(double towardRail, double towardRailRate, double lift, double liftRate,
                               double forwardSpeed, double wheels, const UnilateralContactLaw& normal,
                               const WheelRailSettings& w) {
+    const UnilateralContactLaw flange = makeFlangeLaw(normal, w);
     FlangeForces f;
     const double sg = std::sin(w.flangeAngle), cg = std::cos(w.flangeAngle);
     f.penetration = calcPenetration(towardRail, lift, w);
     if (f.penetration <= 0) return f;
     const double rate = towardRailRate * sg - liftRate * cg;
-    f.normal = calcUnilateralNormalForce(f.penetration, rate, normal);
+    f.normal = calcUnilateralNormalForce(f.penetration, rate, flange);
     const double slide = towardRailRate * cg + liftRate * sg;
     f.friction = calcLateralCreepForce(slide, forwardSpeed, f.normal, wheels, w);
     f.towardRail = -f.normal * sg + f.friction * cg;
     f.vertical = f.normal * cg + f.friction * sg;
-    f.dissipatedPower = calcUnilateralContactDissipation(f.penetration, rate, normal) - f.friction * slide;
+    f.dissipatedPower = calcUnilateralContactDissipation(f.penetration, rate, flange) - f.friction * slide;
     return f;
 }
 
 double calcFlangeEnergy(double towardRail, double lift, const UnilateralContactLaw& normal,
                         const WheelRailSettings& w) {
-    return calcUnilateralContactEnergy(calcPenetration(towardRail, lift, w), normal);
+    return calcUnilateralContactEnergy(calcPenetration(towardRail, lift, w), makeFlangeLaw(normal, w));
 }
 
 double calcNadalLimit(double flangeAngle, double friction) {

@@ -32,6 +32,7 @@ struct WheelRailSettings {
     double flangeAngle = 75 * (3.14159265358979323846 / 180);  ///< γ, from the horizontal [rad] (75°)
     double flangewayClearance = 0.375 * 0.0254;  ///< lateral free play of one wheel to flange contact [m]
     double flangeHeight = 1 * 0.0254;            ///< flange tip below the tread [m]
+    double flangeStiffnessScale = 1;             ///< the flange's stiffness over the tread's (convergence studies)
 };
 
 /// "restraint", "creep_and_flange": the scenario's names of the formulations.
@@ -70,7 +71,7 @@ double calcLateralCreepForce(double slipVelocity, double forwardSpeed, double no
 ///
 /// the penetration normal to the face (lifting the wheel moves the rail's gauge corner
 /// toward the flange tip, away from the face). The normal force N_f = f_unilateral(p, ṗ)
-/// (UnilateralContactLaw: the tread's stiffness and dissipation), and the friction along
+/// (UnilateralContactLaw: the tread's, its stiffness times flangeStiffnessScale), and the friction along
 /// the face is the creep law with the sliding velocity along it,
 ///
 ///     s = ė·cos γ + ḣ·sin γ       (t: up the face, toward the rail),
@@ -91,7 +92,8 @@ FlangeForces calcFlangeForces(double towardRail, double towardRailRate, double l
                               double forwardSpeed, double wheels, const UnilateralContactLaw& normal,
                               const WheelRailSettings& w);
 
-/// Elastic energy of the flange contact: ½·k·p² (calcUnilateralContactEnergy).
+/// Elastic energy of the flange contact: ½·k_f·p² (calcUnilateralContactEnergy), k_f the
+/// tread's stiffness times flangeStiffnessScale.
 double calcFlangeEnergy(double towardRail, double lift, const UnilateralContactLaw& normal,
                         const WheelRailSettings& w);
 

@@ -182,6 +182,8 @@ std::vector<ScenarioField> makeSchema() {
                          "0.375 in", {RR_NUMBER(wheelRail.flangewayClearance)}));
     f.push_back(quantity("wheel_rail.flange_height", Dimension::Length, "in", 0, 3 * in, true, false, "1 in",
                          {RR_NUMBER(wheelRail.flangeHeight)}));
+    f.push_back(quantity("wheel_rail.flange_stiffness_scale", Dimension::Dimensionless, "", 0.01, 100, false, false,
+                         "1", {RR_NUMBER(wheelRail.flangeStiffnessScale)}));
     // [reduced], [attribution]
     f.push_back(flag("reduced.truck_weight", "false", {RR_FLAG(reduced.truckWeight)}));
     f.push_back(flag("attribution.unsprung_gravity", "true", {RR_FLAG(attribution.unsprungGravity)}));

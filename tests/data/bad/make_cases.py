@@ -103,6 +103,7 @@ ranged = {
     ("wheel_rail", "friction"): ["0", "1.5", "nan", '"0.5 in"'],
     ("wheel_rail", "creep_coefficient"): ['"1 N"', '"1e10 N"', '"nan N"', '"1e7 in"', "1e7"],
     ("wheel_rail", "flange_angle"): ['"30 deg"', '"90 deg"', '"nan deg"', "75"],
+    ("wheel_rail", "flange_stiffness_scale"): ["0", "1000", "nan"],
     ("limits", "wheels_off_time"): ['"0 s"', '"11 s"', '"nan s"'],
     ("limits", "rollover_angle"): ['"0 deg"', '"91 deg"', '"inf deg"'],
     ("limits", "energy_runaway_fraction"): ["0", "101", "nan"],
