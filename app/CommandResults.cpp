@@ -244,6 +244,11 @@ SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
                                         "sine's fundamental); this scenario has a measured track: expected [track] "
                                         "without file or measured",
                                         sc.source));
+    if (sc.wheelRail.lateral != LateralWheelRail::Restraint)
+        throw ScenarioError(fmt::format("{}: key 'wheel_rail.lateral' = \"{}\": expected \"restraint\" for steady (the "
+                                        "describing function solves the report's formulation, with its lateral "
+                                        "restraint)",
+                                        sc.source, getLateralWheelRailName(sc.wheelRail.lateral)));
     SteadyResult r;
     const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
                                                                         sc.track.railLength);

@@ -468,7 +468,8 @@ std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& 
                 verdict = "not explained here";
             }
             if (b && b != own)
-                beside += fmt::format("; {}'s own orbits are not computed in validate (docs/orbits.md)", sw.model);
+                beside += fmt::format("; {}'s own orbits are not computed in validate (docs/validation.md, "
+                                      "\"Section 11\")", sw.model);
             if (own && sw.model == model_names::kReduced) verdict += "; " + describeSettled(*own);
             md += fmt::format("| {} | {:.2f} | {} | {:.1f} | {} | {} |\n", sw.c.car, sw.c.amplitudeIn, sw.model, drop,
                               beside, verdict);

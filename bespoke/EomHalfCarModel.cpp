@@ -204,34 +204,34 @@ EomHalfCarModel::Forces EomHalfCarModel::calcForces(double t, const State& y) co
         for (int side : {0, 1}) {
             const double sg = side == 0 ? 1.0 : -1.0;
             const double e = tread[side].x.x() - g.railY[side], v = tread[side].v.x();
-            const double delta = rail.z[side] - tread[side].x.y();
             f.wheelOffset[side] = e;
             const double creep = calcLateralCreepForce(v, rail.speed, f.wheel[side], 2, wheelRail_);
             f.dissipatedPower -= creep * v;
-            const FlangeForces fl = calcFlangeForces(sg * e, sg * v, -delta, tread[side].v.y() - rail.zDot[side],
-                                                     rail.speed, 2, laws_.wheelVertical, wheelRail_);
+            const FlangeForces fl = calcFlangeForces(sg * e, sg * v, tread[side].x.y() - rail.z[side],
+                                                     tread[side].v.y() - rail.zDot[side], rail.speed, 2,
+                                                     laws_.wheelVertical, wheelRail_);
             f.wheelFlange[side] = fl.normal;
             f.wheel[side] += fl.vertical;
             f.wheelLateral[side] = creep + sg * fl.towardRail;
             f.dissipatedPower += fl.dissipatedPower;
-            f.elasticEnergy += calcFlangeEnergy(sg * e, -delta, laws_.wheelVertical, wheelRail_);
+            f.elasticEnergy += fl.energy;
             f.railInputPower += fl.vertical * rail.zDot[side];
             applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
         }
-        for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;
-        return f;
-    }
-    const double total = f.wheel[0] + f.wheel[1];
-    for (int side : {0, 1}) {
-        const double share = simp_.equalLateralShares ? 0.5 : (total > 0 ? f.wheel[side] / total : 0.0);
-        const double e = tread[side].x.x() - g.railY[side];
-        f.wheelOffset[side] = e;
-        f.wheelLateral[side] = -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
-        // Energy audit: the restraint is the rails' lateral reaction, an external
-        // force (not conservative with load shares; WheelRailContact.h): its work
-        // on the wheel is rail input, and it stores and dissipates nothing.
-        f.railInputPower += f.wheelLateral[side] * tread[side].v.x();
-        applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
+    } else {
+        const double total = f.wheel[0] + f.wheel[1];
+        for (int side : {0, 1}) {
+            const double share = simp_.equalLateralShares ? 0.5 : (total > 0 ? f.wheel[side] / total : 0.0);
+            const double e = tread[side].x.x() - g.railY[side];
+            f.wheelOffset[side] = e;
+            f.wheelLateral[side] =
+                -share * (laws_.wheelLateralStiffness * e + laws_.wheelLateralDamping * tread[side].v.x());
+            // Energy audit: the restraint is the rails' lateral reaction, an external
+            // force (not conservative with load shares; WheelRailContact.h): its work
+            // on the wheel is rail input, and it stores and dissipates nothing.
+            f.railInputPower += f.wheelLateral[side] * tread[side].v.x();
+            applyForce(f, Wheelset, tread[side], Vec2(f.wheelLateral[side], f.wheel[side]));
+        }
     }
     for (int b = 0; b < kNumBodies; ++b) f.generalized[3 * b + 2] -= mass_[b] * units::g;
     return f;

@@ -38,9 +38,9 @@ UnilateralContactLaw makeFlangeLaw(const UnilateralContactLaw& tread, const Whee
     return {tread.stiffness * w.flangeStiffnessScale, tread.dissipation};
 }
 
-double calcPenetration(double towardRail, double lift, const WheelRailSettings& w) {
+double calcPenetration(double towardRail, double lift, double sinAngle, double cosAngle, const WheelRailSettings& w) {
     if (lift >= w.flangeHeight) return 0;
-    return (towardRail - w.flangewayClearance) * std::sin(w.flangeAngle) - lift * std::cos(w.flangeAngle);
+    return (towardRail - w.flangewayClearance) * sinAngle - lift * cosAngle;
 }
 }  // namespace
 
@@ -50,7 +50,7 @@ FlangeForces calcFlangeForces(double towardRail, double towardRailRate, double l
     const UnilateralContactLaw flange = makeFlangeLaw(normal, w);
     FlangeForces f;
     const double sg = std::sin(w.flangeAngle), cg = std::cos(w.flangeAngle);
-    f.penetration = calcPenetration(towardRail, lift, w);
+    f.penetration = calcPenetration(towardRail, lift, sg, cg, w);
     if (f.penetration <= 0) return f;
     const double rate = towardRailRate * sg - liftRate * cg;
     f.normal = calcUnilateralNormalForce(f.penetration, rate, flange);
@@ -59,12 +59,14 @@ FlangeForces calcFlangeForces(double towardRail, double towardRailRate, double l
     f.towardRail = -f.normal * sg + f.friction * cg;
     f.vertical = f.normal * cg + f.friction * sg;
     f.dissipatedPower = calcUnilateralContactDissipation(f.penetration, rate, flange) - f.friction * slide;
+    f.energy = calcUnilateralContactEnergy(f.penetration, flange);
     return f;
 }
 
 double calcFlangeEnergy(double towardRail, double lift, const UnilateralContactLaw& normal,
                         const WheelRailSettings& w) {
-    return calcUnilateralContactEnergy(calcPenetration(towardRail, lift, w), makeFlangeLaw(normal, w));
+    const double p = calcPenetration(towardRail, lift, std::sin(w.flangeAngle), std::cos(w.flangeAngle), w);
+    return calcUnilateralContactEnergy(p, makeFlangeLaw(normal, w));
 }
 
 double calcNadalLimit(double flangeAngle, double friction) {

@@ -87,6 +87,7 @@ struct FlangeForces {
     double towardRail = 0;   ///< F_e [N]
     double vertical = 0;     ///< F_z [N]
     double dissipatedPower = 0;  ///< normal (Hunt–Crossley) and friction, ≥ 0 [W]
+    double energy = 0;           ///< ½·k_f·p², as calcFlangeEnergy [J]
 };
 FlangeForces calcFlangeForces(double towardRail, double towardRailRate, double lift, double liftRate,
                               double forwardSpeed, double wheels, const UnilateralContactLaw& normal,

@@ -130,11 +130,10 @@ public:
     }
     /// Groups already declared wheel-lift (and lateral) channels into a wheelset for the run monitor.
     void addWheelset(ChannelLayout::Wheelset w) { layout_.wheelsets.push_back(w); }
-    /// The wheelset whose left wheel's lift is channel `liftLeft`, or nullptr.
-    ChannelLayout::Wheelset* findWheelset(int liftLeft) {
-        if (liftLeft < 0) return nullptr;
+    /// The wheelset whose left wheel's lift channel is named `liftLeftQuantity`, or nullptr.
+    ChannelLayout::Wheelset* findWheelset(const std::string& liftLeftQuantity) {
         for (auto& w : layout_.wheelsets)
-            if (w.liftLeft == liftLeft) return &w;
+            if (w.liftLeft >= 0 && layout_.channels[size_t(w.liftLeft)].quantity == liftLeftQuantity) return &w;
         return nullptr;
     }
 
@@ -250,7 +249,7 @@ void declareHalfCarFreightChannels(ChannelTable<Sample>& c, double staticWheelLo
             // Its wheel is a truck side's two: its L/V is the truck side's as well.
             const int lv = c.add("l_over_v_F1_" + S, "ratio", ChannelRole::LOverV | ChannelRole::TruckSideLOverV,
                                  [=](const Sample& s) { return calcLOverV(s.wheelLateral[side], s.wheel[side]); });
-            if (auto* w = c.findWheelset(c.getLayout().find("wheel_lift_F1_L_in"))) w->lOverV[side] = lv;
+            if (auto* w = c.findWheelset("wheel_lift_F1_L")) w->lOverV[side] = lv;
         }
     }
     c.add("car_body_vertical_accel", "g", ChannelRole::CarBodyVerticalAccel,

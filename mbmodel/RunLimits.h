@@ -20,8 +20,8 @@ struct RunLimits {
     /// Wheel flange height above the tread and the lateral travel of a wheelset
     /// to flange contact: the scenario's [wheel_rail] values, copied here by
     /// resolveRunLimits (WheelRailSettings; docs/model.md, "Wheel–rail contact").
-    double flangeHeight = 1.0 * units::inch;
-    double flangeClearance = 0.375 * units::inch;
+    double flangeHeight = WheelRailSettings{}.flangeHeight;
+    double flangeClearance = WheelRailSettings{}.flangewayClearance;
     /// A wheel in flange contact whose own L/V stays above Nadal's limit longer
     /// than this has climbed its rail: 50 ms, the AAR's wheel-climb duration
     /// (docs/model.md, "Run limits").

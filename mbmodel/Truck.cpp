@@ -14,6 +14,10 @@ using SimTK::System; using SimTK::Integrator;
 namespace rockroll {
 
 namespace {
+/// The lift channel of wheelset i's wheel on one side ("wheel_lift_F1_L").
+std::string makeWheelLiftName(const std::string& truck, size_t i, int side) {
+    return fmt::format("wheel_lift_{}{}_{}", truck, i + 1, kSideName[side]);
+}
 }  // namespace
 
 MobilizedBody::Planar makeCrossSectionBody(MobilizedBody& ground, double x, const Body::Rigid& body) {
@@ -208,7 +212,7 @@ void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
             if (!lumped)
                 c.add(fmt::format("wheel_{}{}_{}", T, i + 1, kSideName[side]), "lb", R::SingleWheelLoad,
                       [=](const CarSample& s) { return truck(s).wheels[i].vertical[side] / lb; });
-            const int lift = c.add(fmt::format("wheel_lift_{}{}_{}", T, i + 1, kSideName[side]), "in", R::WheelLift,
+            const int lift = c.add(makeWheelLiftName(T, i, side), "in", R::WheelLift,
                                    [=](const CarSample& s) { return truck(s).wheels[i].lift[side] / in; });
             (side == kLeft ? wheelsets[i].liftLeft : wheelsets[i].liftRight) = lift;
             if (spec_.wheelRail.lateral == LateralWheelRail::CreepAndFlange)
@@ -230,8 +234,7 @@ void Truck::declareFreightChannels(ChannelTable<CarSample>& c, int index) const 
     const std::string& T = spec_.label;
     auto truck = [index](const CarSample& s) -> const TruckSample& { return s.trucks[index]; };
     for (size_t i = 0; i < wheelsets_.size(); ++i) {
-        ChannelLayout::Wheelset* layout =
-            c.findWheelset(c.getLayout().find(fmt::format("wheel_lift_{}{}_{}_in", T, i + 1, kSideName[kLeft])));
+        ChannelLayout::Wheelset* layout = c.findWheelset(makeWheelLiftName(T, i, kLeft));
         for (int side : {kLeft, kRight}) {
             const double staticLoad = calcStaticWheelLoad(int(i));
             c.add(fmt::format("wheel_unloading_{}{}_{}", T, i + 1, kSideName[side]), "ratio",

@@ -59,3 +59,11 @@ TEST(SteadyCommand, StabilityNoneIsNotComputedInText) {
     }
     EXPECT_GT(rows, 3) << out;
 }
+
+TEST(SteadyCommand, RefusesTheCreepAndFlangeContactItDoesNotSolve) {
+    int code = -1;
+    const std::string err = capture(kSteady + " --set wheel_rail.lateral=creep_and_flange 2>&1 >/dev/null", code);
+    EXPECT_EQ(code, 2) << err;
+    EXPECT_NE(err.find("wheel_rail.lateral"), std::string::npos) << err;
+    EXPECT_NE(err.find("expected \"restraint\" for steady"), std::string::npos) << err;
+}

@@ -70,6 +70,7 @@ TEST(WheelRailLaws, FlangeTouchesAtTheClearanceAndSplitsItsForceAtTheFlangeAngle
     EXPECT_NEAR(f.vertical, f.normal * cg, 1e-6);
     EXPECT_NEAR(-f.towardRail / f.vertical, std::tan(w.flangeAngle), 1e-12);
     EXPECT_NEAR(calcFlangeEnergy(w.flangewayClearance + x, 0, normal, w), 0.5 * 1e9 * x * x * sg * sg, 1e-9);
+    EXPECT_EQ(f.energy, calcFlangeEnergy(w.flangewayClearance + x, 0, normal, w));
     // Lifting the wheel moves the face away: the penetration falls by h·cos γ.
     const double h = 1e-5;
     EXPECT_NEAR(calcFlangeForces(w.flangewayClearance + x, 0, h, 0, V, 1, normal, w).penetration, x * sg - h * cg,
