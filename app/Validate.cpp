@@ -133,6 +133,8 @@ int validateCommand(const ValidateOptions& o) {
     md += section("attribution", [&] { return makeAttributionSection(s, meta); });
     step("periodic orbits");
     md += section("periodic orbits", [&] { return makeOrbitSection(s, sweeps, steady, meta); });
+    step("wheel-rail contact");
+    md += section("wheel-rail contact", [&] { return makeWheelRailSection(s, sweeps, meta); });
     if (!failedSections.empty()) meta["failed_sections"] = failedSections;
 
     step("plots");

@@ -113,8 +113,20 @@ std::string makeAttributionSection(const Settings& s, nlohmann::ordered_json& me
 /// 11. Periodic orbits of eom and the half car on the upper branch (ValidateOrbits.cpp).
 std::string makeOrbitSection(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
                              nlohmann::ordered_json& meta);
+/// 12. The wheel–rail contact: the report's lateral restraint against the creep and flange
+/// contact, and the cases closest to flange climb (ValidateWheelRail.cpp).
+std::string makeWheelRailSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta);
 
 namespace validate_detail {
+
+/// A row of the report's Table 3 (scenarios/reference/mit1976.toml, `table3`).
+struct Table3Row {
+    std::string label, car;
+    double amplitudeIn, speedMph;
+    std::array<double, 5> report;  ///< roll deg, lift in, wheel lb, side bearing lb, center plate lb
+    std::string branch;            ///< which branch the report's number is on, in its own words
+};
+std::vector<Table3Row> loadTable3(const Mit1976& ref);
 
 /// Runs independent jobs on `threads` threads of the program's one pool (mbmodel/Parallel.h),
 /// in order of submission; each job stores its result by index. Rethrows the error of the
@@ -133,6 +145,19 @@ double relativeChange(double a, double b, double floor);
 
 /// "+12 %": ours against the report's, empty when there is nothing to compare.
 std::string fmtPct(double ours, double report);
+
+/// One of section 2's sweeps: `car` (its scenario file) at the case's amplitude, on
+/// `model`, at validate's sweep step and time per speed, recorded at 100 Hz.
+SweepSpec makeSweepSpec(const Settings& s, const Scenario& car, const SweepCase& c, const std::string& model,
+                        SweepDirection direction);
+
+/// Sets r's jump speeds from its points (findSweepJump).
+void findJumps(SweepResult& r);
+
+/// "X° at V mph": a sweep's largest value of `value` over its points, with its speed. A
+/// down sweep that never drops and is largest at its lowest speed has no maximum in the
+/// range swept: it "stays on the upper branch to the lowest speed swept".
+std::string describeLargest(const SweepResult& r, SweepDirection direction, double (*value)(const RunSummary&));
 
 /// "sweep_<car>_<A>in" key part: "70ton-loaded_0.75in".
 std::string caseKey(const SweepCase& c);

@@ -21,25 +21,6 @@ const std::vector<SweepCase> kSweepCases{{"70ton-loaded", 0.5, 10, 22, "17"},  {
                                          {"70ton-loaded", 1.0, 10, 22, "11, 17"},  {"70ton-empty", 0.75, 24, 40, "18"},
                                          {"100ton-loaded", 0.75, 8, 18, "21"}, {"100ton-loaded", 1.0, 8, 18, "24"}};
 
-/// "X° at V mph": a sweep's largest value of `value` over its points, with its speed. A
-/// down sweep that never drops and is largest at its lowest speed has no maximum in the
-/// range swept: it "stays on the upper branch to the lowest speed swept".
-std::string describeLargest(const SweepResult& r, SweepDirection direction, double (*value)(const RunSummary&)) {
-    const std::vector<SweepPoint>& l = direction == SweepDirection::Up ? r.up : r.down;
-    const SweepPoint* best = nullptr;
-    for (const auto& p : l)
-        if (!p.failed && (!best || value(p.summary) > value(best->summary))) best = &p;
-    if (!best) return "—";
-    const std::string at = fmt::format("{:.2f}° at {:g} mph", value(best->summary), best->speedMph);
-    const bool neverDrops = direction == SweepDirection::Down && !std::isfinite(r.jumpDownMph);
-    return neverDrops && best == &l.back() ? "stays on the upper branch to the lowest speed swept (" + at + ")" : at;
-}
-
-void findJumps(SweepResult& r) {
-    r.jumpUpMph = findSweepJump(r.up, SweepDirection::Up).speedMph;
-    r.jumpDownMph = findSweepJump(r.down, SweepDirection::Down).speedMph;
-}
-
 void writeSweepCsv(const Settings& s, const SweepResult& r) {
     writeAtomically(s.out / fmt::format("sweep_{}_{}.csv", caseKey(r.c), r.model), [&](std::ostream& o) {
         CsvWriter csv(o, {"direction", "start", "speed_mph", "failed", "max_roll_deg", "steady_roll_amplitude_deg",
@@ -70,6 +51,35 @@ void writeSweepCsv(const Settings& s, const SweepResult& r) {
 
 }  // namespace
 
+std::string validate_detail::describeLargest(const SweepResult& r, SweepDirection direction, double (*value)(const RunSummary&)) {
+    const std::vector<SweepPoint>& l = direction == SweepDirection::Up ? r.up : r.down;
+    const SweepPoint* best = nullptr;
+    for (const auto& p : l)
+        if (!p.failed && (!best || value(p.summary) > value(best->summary))) best = &p;
+    if (!best) return "—";
+    const std::string at = fmt::format("{:.2f}° at {:g} mph", value(best->summary), best->speedMph);
+    const bool neverDrops = direction == SweepDirection::Down && !std::isfinite(r.jumpDownMph);
+    return neverDrops && best == &l.back() ? "stays on the upper branch to the lowest speed swept (" + at + ")" : at;
+}
+
+void validate_detail::findJumps(SweepResult& r) {
+    r.jumpUpMph = findSweepJump(r.up, SweepDirection::Up).speedMph;
+    r.jumpDownMph = findSweepJump(r.down, SweepDirection::Down).speedMph;
+}
+
+SweepSpec validate_detail::makeSweepSpec(const Settings& s, const Scenario& car, const SweepCase& c, const std::string& model,
+                                         SweepDirection direction) {
+    SweepSpec spec;
+    spec.scenario = car;
+    spec.scenario.model = model;
+    spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
+    spec.scenario.run.duration = s.sweepDuration;
+    spec.scenario.run.outputRate = 100;
+    spec.fromMph = c.fromMph, spec.toMph = c.toMph, spec.stepMph = s.sweepStep;
+    spec.direction = direction;
+    return spec;
+}
+
 std::vector<SweepResult> runAllSweeps(const Settings& s) {
     std::vector<SweepSpec> specs;
     std::vector<SweepResult> results;
@@ -85,17 +95,7 @@ std::vector<SweepResult> runAllSweeps(const Settings& s) {
         const Scenario car = loadCarScenario(c.car);
         r.criteria = resolveCriteriaLimits(car);
         results.push_back(r);
-        for (auto dir : {SweepDirection::Up, SweepDirection::Down}) {
-            SweepSpec spec;
-            spec.scenario = car;
-            spec.scenario.model = m;
-            spec.scenario.track.amplitude = c.amplitudeIn * units::inch;
-            spec.scenario.run.duration = s.sweepDuration;
-            spec.scenario.run.outputRate = 100;
-            spec.fromMph = c.fromMph, spec.toMph = c.toMph, spec.stepMph = s.sweepStep;
-            spec.direction = dir;
-            specs.push_back(spec);
-        }
+        for (auto dir : {SweepDirection::Up, SweepDirection::Down}) specs.push_back(makeSweepSpec(s, car, c, m, dir));
     }
     size_t total = 0;
     for (const auto& sp : specs) total += getSweepSpeeds(sp).size();

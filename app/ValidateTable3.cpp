@@ -8,16 +8,7 @@ namespace rockroll::app {
 
 using namespace validate_detail;
 
-namespace {
-
-struct Table3Row {
-    std::string label, car;
-    double amplitudeIn, speedMph;
-    std::array<double, 5> report;  // roll deg, lift in, wheel lb, side bearing lb, center plate lb
-    std::string branch;            // which branch the report's number is on, in its own words
-};
-
-std::vector<Table3Row> loadTable3(const Mit1976& ref) {
+std::vector<Table3Row> validate_detail::loadTable3(const Mit1976& ref) {
     std::vector<Table3Row> rows;
     for (size_t i = 0; i < ref.count("table3"); ++i) {
         const std::string k = fmt::format("table3[{}].", i);
@@ -28,8 +19,6 @@ std::vector<Table3Row> loadTable3(const Mit1976& ref) {
     }
     return rows;
 }
-
-}  // namespace
 
 std::string makeTable3Section(const Settings& s, const std::vector<SweepResult>& sweeps, const SteadyByAmplitude& steady,
                               const ResidualUncertainty& u, nlohmann::ordered_json& meta) {

@@ -141,6 +141,53 @@ std::vector<std::string> checkValidateCsv(const fs::path& path, bool quick) {
                 errors.push_back(name + ": " + e.what());
             }
         numeric = {"speed_mph"};
+    } else if (name == "wheel_rail_table3.csv" || name == "wheel_rail_flange_climb.csv") {
+        // Section 12: one row per run; a failed run holds only its case.
+        const bool table3 = name == "wheel_rail_table3.csv";
+        const std::vector<std::string> cases{"amplitude_in", "speed_mph"};
+        const std::vector<std::string> measures =
+            table3 ? std::vector<std::string>{"max_roll_deg", "steady_max_roll_deg", "max_wheel_lift_in",
+                                              "max_wheel_load_lb", "min_wheel_load_ratio", "max_side_bearing_load_lb",
+                                              "max_single_wheel_l_over_v", "max_truck_side_l_over_v",
+                                              "energy_balance_error"}
+                   : std::vector<std::string>{"nadal_limit", "held_l_over_v", "l_over_v_margin", "longest_flange_contact_s", "max_flange_force_lb",
+                                              "max_lift_in_flange_contact_in", "max_wheelset_lateral_in",
+                                              "max_single_wheel_l_over_v", "min_wheel_load_ratio", "max_roll_deg"};
+        expectColumns(t, {"car", "failed", "regime"}, errors, name);
+        expectColumns(t, cases, errors, name);
+        expectColumns(t, measures, errors, name);
+        expectValues(t, "failed", {"0", "1"}, errors, name);
+        if (table3) expectValues(t, "lateral", {"restraint", "creep_and_flange"}, errors, name);
+        CsvTable ok = t;
+        ok.rows.clear();
+        const int f = t.find("failed");
+        for (const auto& r : t.rows)
+            if (f >= 0 && r[f] == "0") ok.rows.push_back(r);
+        for (const auto& c : measures) try {
+                for (double v : ok.numbers(c))
+                    if (!std::isfinite(v)) errors.push_back(name + ": " + c + " holds " + std::to_string(v));
+            } catch (const std::exception& e) {
+                errors.push_back(name + ": " + e.what());
+            }
+        if (!table3) {
+            // The climb margin is the held L/V over Nadal's limit, and a run the monitor did not
+            // stop never held more than the limit (the monitor reads the same rows).
+            const int held = t.find("held_l_over_v_in_flange_contact"), margin = t.find("climb_margin"),
+                      nadal = t.find("nadal_limit"), stopped = t.find("stopped_at_s");
+            if (held < 0 || margin < 0 || nadal < 0 || stopped < 0) {
+                errors.push_back(name + ": no climb columns");
+            } else {
+                for (const auto& r : ok.rows) {
+                    if (r[held].empty() != r[margin].empty()) errors.push_back(name + ": held L/V without a margin");
+                    if (r[held].empty()) continue;
+                    const double m = parseNumber(r[margin]).value_or(NAN), h = parseNumber(r[held]).value_or(NAN),
+                                 n = parseNumber(r[nadal]).value_or(NAN);
+                    if (std::abs(m - h / n) > 1e-3) errors.push_back(name + ": climb margin " + r[margin] + " is not " + r[held] + " / " + r[nadal]);
+                    if (r[stopped].empty() && m > 1 + 1e-3) errors.push_back(name + ": a run that was not stopped held a climb margin of " + r[margin]);
+                }
+            }
+        }
+        numeric = cases;
     } else {
         errors.push_back(name + ": a CSV this test does not know; add its columns here");
     }
@@ -250,6 +297,16 @@ ReadBack checkValidateOutput(const fs::path& out, bool quick) {
                     EXPECT_TRUE(fs::exists(out / file)) << "validation.json lists " << file;
                 }
             }
+            // Section 12's files.
+            if (!(j.contains("wheel_rail") && j["wheel_rail"].contains("files"))) {
+                ADD_FAILURE() << "validation.json: no wheel_rail files";
+            } else {
+                for (const auto& item : j["wheel_rail"]["files"]) {
+                    const std::string file = item.at("file").get<std::string>();
+                    listed.insert(file);
+                    EXPECT_TRUE(fs::exists(out / file)) << "validation.json lists " << file;
+                }
+            }
         } else if (e.path().extension() == ".csv") {
             ++n.csvs;
             EXPECT_EQ(join(checkValidateCsv(e.path(), quick)), "");
@@ -292,7 +349,7 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
     const std::string report = readTextFile(out / "REPORT.md");
     for (const char* section : {"Time histories", "Roll against speed", "Table 3", "Table 4", "Describing-function",
                                 "Modes", "Convergence", "degrees of freedom", "criteria", "Attribution",
-                                "Where the upper branch ends"})
+                                "Where the upper branch ends", "The wheel–rail contact", "closest to flange climb"})
         EXPECT_NE(report.find(section), std::string::npos) << section;
     // The quick attribution and convergence sections produce their tables.
     for (const char* table : {"| half car: `unsprung_gravity = false` |", "| reduced: `truck_weight = true` |",
@@ -322,14 +379,15 @@ TEST(Validate, QuickRunWritesAReportWithEverySection) {
             << names.back() << " is not in REPORT.md's phase line";
     }
     EXPECT_EQ(join(names), join({"convergence", "time histories", "speed sweeps", "describing function", "Tables 3 and 4",
-                                 "modes", "added degrees of freedom", "attribution", "periodic orbits", "plots"}));
+                                 "modes", "added degrees of freedom", "attribution", "periodic orbits",
+                                 "wheel-rail contact", "plots"}));
     EXPECT_LE(wallSum, meta.at("wall_min").get<double>() + 1e-9);
     EXPECT_GT(meta.at("cpu_min").get<double>(), 0);
 
     const ReadBack n = checkValidateOutput(out, true);
-    // Quick run: 4 time histories, 6 sweeps, 1 steady, 1 orbit branch; a time-history plot, 2 per
-    // sweep case, 1 steady.
-    EXPECT_EQ(n.csvs, 12);
+    // Quick run: 4 time histories, 6 sweeps, 1 steady, 1 orbit branch, 2 of the wheel–rail contact;
+    // a time-history plot, 2 per sweep case, 1 steady.
+    EXPECT_EQ(n.csvs, 14);
     EXPECT_EQ(n.pngs, 14);
     EXPECT_EQ(n.jsons, n.pngs + 1);
 }
@@ -391,6 +449,22 @@ TEST(Validate, ReadBackChecksCatchWrongFiles) {
     write("steady_70ton-loaded_0.75in.csv", good);
     EXPECT_NE(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", true)), "") << "quick run said stable";
     EXPECT_EQ(join(checkValidateCsv(dir / "steady_70ton-loaded_0.75in.csv", false)), "");
+    // Section 12: a run the monitor let finish cannot have held more than Nadal's limit in flange contact.
+    const std::string climbHeader =
+        "car,amplitude_in,speed_mph,failed,regime,stopped_at_s,stop_reason,nadal_limit,held_l_over_v,l_over_v_margin,"
+        "held_l_over_v_wheel,held_l_over_v_in_flange_contact,climb_margin,held_in_flange_contact_wheel,"
+        "longest_flange_contact_s,max_flange_force_lb,max_lift_in_flange_contact_in,max_wheelset_lateral_in,"
+        "max_single_wheel_l_over_v,min_wheel_load_ratio,max_roll_deg\n";
+    auto climbRow = [](const std::string& stopped, const std::string& held, const std::string& margin) {
+        return "70ton-loaded,0.75,16,0,severe," + stopped + ",,1.1277,0.9,0.7981,l_over_v_T1_L," + held + "," + margin +
+               ",flange_T11_L,0.2,30000,0.1,0.4,0.95,0.05,3.2\n";
+    };
+    write("wheel_rail_flange_climb.csv", climbHeader + climbRow("", "0.9", "0.7981"));
+    EXPECT_EQ(join(checkValidateCsv(dir / "wheel_rail_flange_climb.csv", false)), "");
+    write("wheel_rail_flange_climb.csv", climbHeader + climbRow("", "1.2", "1.0641"));
+    EXPECT_NE(join(checkValidateCsv(dir / "wheel_rail_flange_climb.csv", false)), "") << "climbed but not stopped";
+    write("wheel_rail_flange_climb.csv", climbHeader + climbRow("9.5", "1.2", "0.5"));
+    EXPECT_NE(join(checkValidateCsv(dir / "wheel_rail_flange_climb.csv", false)), "") << "margin is not held / Nadal";
     write("other.csv", "a,b\n1,2\n");
     EXPECT_NE(join(checkValidateCsv(dir / "other.csv", true)), "") << "unknown CSV";
 
