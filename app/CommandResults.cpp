@@ -23,6 +23,9 @@ nlohmann::ordered_json toJson(const RunSummary& s) {
     j["peak_to_peak_roll_deg"] = s.peakToPeakRollDeg;
     j["max_wheel_lift_in"] = s.maxWheelLiftIn;
     auto valueOrNull = [](double x) { return std::isnan(x) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(x); };
+    j["max_pitch_deg"] = valueOrNull(s.maxPitchDeg);
+    j["max_yaw_deg"] = valueOrNull(s.maxYawDeg);
+    j["max_car_body_twist_deg"] = valueOrNull(s.maxCarBodyTwistDeg);
     j["max_wheel_load_lb"] = s.maxWheelLoadLb;  // the truck side's two wheels; kept beside its new name for one release
     j["max_truck_side_wheel_load_lb"] = s.maxWheelLoadLb;
     j["max_single_wheel_load_lb"] = valueOrNull(s.maxSingleWheelLoadLb);
@@ -414,6 +417,7 @@ ModesResult calcScenarioModes(const Scenario& sc) {
     ModelOptions options;
     options.speed = sc.speed;
     options.entry = sc.entry;
+    options.carBody = sc.carBody;  // the twisting car body has its twist mode
     const auto model = descriptor->makeMultibody(makeModalCar(sc.car), TrackInput(level), options);
     ModesResult r;
     r.modes = calcModes(*model);

@@ -97,6 +97,9 @@ RunSummary summaryFromJson(const Json& j) {
     s.maxRollDeg = j.at("max_roll_deg").get<double>();
     s.steadyRollAmplitudeDeg = j.at("steady_roll_amplitude_deg").get<double>();
     s.peakToPeakRollDeg = j.at("peak_to_peak_roll_deg").get<double>();
+    s.maxPitchDeg = numberOrNaN(j, "max_pitch_deg");
+    s.maxYawDeg = numberOrNaN(j, "max_yaw_deg");
+    s.maxCarBodyTwistDeg = numberOrNaN(j, "max_car_body_twist_deg");
     s.maxWheelLiftIn = j.at("max_wheel_lift_in").get<double>();
     s.maxWheelLoadLb = j.at("max_wheel_load_lb").get<double>();
     s.minWheelLoadRatio = j.at("min_wheel_load_ratio").get<double>();

@@ -481,7 +481,11 @@ Json makeFlatSummary(Json summary) {
 Json summarizeSweeps(const std::vector<std::vector<SweepPoint>>& sweeps, std::string& status) {
     size_t speeds = 0, failed = 0, severe = 0, criteriaFailed = 0;
     const SweepPoint* maxRoll = nullptr;
-    double lift = 0, sideBearing = 0, centerPlate = 0, minRatio = INFINITY, lOverV = NAN;
+    double lift = 0, sideBearing = 0, centerPlate = 0, minRatio = INFINITY, lOverV = NAN, pitch = NAN, yaw = NAN,
+           twist = NAN;
+    auto keepLarger = [](double& best, double x) {
+        if (!std::isnan(x)) best = std::isnan(best) ? x : std::max(best, x);
+    };
     status = "ok";
     for (const auto& sweep : sweeps)
         for (const SweepPoint& p : sweep) {
@@ -496,7 +500,10 @@ Json summarizeSweeps(const std::vector<std::vector<SweepPoint>>& sweeps, std::st
             sideBearing = std::max(sideBearing, s.maxSideBearingLoadLb);
             centerPlate = std::max(centerPlate, s.maxCenterPlateLoadLb);
             minRatio = std::min(minRatio, s.minWheelLoadRatio);
-            if (!std::isnan(s.maxLOverV)) lOverV = std::isnan(lOverV) ? s.maxLOverV : std::max(lOverV, s.maxLOverV);
+            keepLarger(lOverV, s.maxLOverV);
+            keepLarger(pitch, s.maxPitchDeg);
+            keepLarger(yaw, s.maxYawDeg);
+            keepLarger(twist, s.maxCarBodyTwistDeg);
             severe += s.regime == "severe" ? 1 : 0;
             criteriaFailed += s.passesCriteria() ? 0 : 1;
             if ((s.regime == "derailed" || s.regime == "overturned") && status == "ok") status = s.regime;
@@ -514,6 +521,18 @@ Json summarizeSweeps(const std::vector<std::vector<SweepPoint>>& sweeps, std::st
     j["max_center_plate_load_lb"] = maxRoll ? Json(centerPlate) : Json(nullptr);
     j["min_wheel_load_ratio"] = orNull(minRatio);
     j["max_l_over_v"] = orNull(lOverV);
+    j["max_pitch_deg"] = orNull(pitch);
+    j["max_yaw_deg"] = orNull(yaw);
+    j["max_car_body_twist_deg"] = orNull(twist);
+    // Each direction's jump by the sweeps' one rule (scenarios/SpeedSweep.h, findSweepJump); null: none.
+    double jump[2] = {NAN, NAN};
+    for (const auto& sweep : sweeps) {
+        if (sweep.empty()) continue;
+        const bool up = sweep.front().direction == "up";
+        jump[up ? 0 : 1] = findSweepJump(sweep, up ? SweepDirection::Up : SweepDirection::Down).speedMph;
+    }
+    j["jump_up_mph"] = orNull(jump[0]);
+    j["jump_down_mph"] = orNull(jump[1]);
     j["severe_speeds"] = severe;
     j["criteria_failed_speeds"] = criteriaFailed;
     j["criteria_pass"] = failed == 0 && criteriaFailed == 0;

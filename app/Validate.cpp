@@ -127,7 +127,7 @@ int validateCommand(const ValidateOptions& o) {
     md += section("modes", [&] { return makeModesSection(); });
     md += convergenceMd;
     step("added degrees of freedom");
-    md += section("added degrees of freedom", [&] { return makeAddedDofSection(s); });
+    md += section("added degrees of freedom", [&] { return makeAddedDofSection(s, sweeps, meta); });
     md += section("criteria", [&] { return makeCriteriaSection(s, sweeps); });
     step("attribution");
     md += section("attribution", [&] { return makeAttributionSection(s, meta); });

@@ -21,7 +21,7 @@ std::string makeModesSection() {
         for (const char* model : {model_names::kHalfCar, model_names::kFullCar}) {
             if (std::string(model) == model_names::kFullCar && std::string(carName) != "70ton-loaded") continue;
             const auto m = ModelRegistry::get().getModel(model).makeMultibody(
-                makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}});
+                makeModalCar(sc.car), TrackInput(level), ModelOptions{sc.speed, sc.entry, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}, CarBodySettings{}});
             const auto table1 = calcTable1Estimates(sc.car);
             for (const Mode& mode : calcModes(*m)) {
                 if (mode.body != "car body") continue;

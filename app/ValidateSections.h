@@ -104,8 +104,9 @@ std::string makeDescribingFunctionSection(const Settings& s, const SteadyByAmpli
 std::string makeModesSection();
 /// 7. Convergence in contact stiffness and integrator accuracy (ValidateConvergence.cpp).
 std::string makeConvergenceSection(const Settings& s, nlohmann::ordered_json& meta, ResidualUncertainty& uncertainty);
-/// 8. The added degrees of freedom (ValidateAddedDof.cpp).
-std::string makeAddedDofSection(const Settings& s);
+/// 8. What the added degrees of freedom change (ValidateAddedDof.cpp): the full car against the half car, its
+/// twisting car body, the truck-centre ratio and the federal harmonics track.
+std::string makeAddedDofSection(const Settings& s, const std::vector<SweepResult>& sweeps, nlohmann::ordered_json& meta);
 /// 9. The freight criteria per sweep (ValidateCriteria.cpp).
 std::string makeCriteriaSection(const Settings& s, const std::vector<SweepResult>& sweeps);
 /// 10. Attribution of the half car – reduced model difference (ValidateAttribution.cpp).

@@ -58,6 +58,8 @@ const std::vector<CarParameterInfo> kTable = [] {
         e("center_plate_friction", &P::centerPlateFriction, Dimension::Dimensionless, "", true),
         e("center_plate_yaw_bristle_angle", &P::centerPlateYawBristleAngle, Dimension::Angle, "deg"),
         e("center_plate_rim_points", &P::centerPlateRimPoints, Dimension::Dimensionless, "", false, true),
+        e("car_body_torsional_stiffness", &P::carBodyTorsionalStiffness, Dimension::AngularStiffness, "lb*in/rad"),
+        e("car_body_torsional_damping_ratio", &P::carBodyTorsionalDampingRatio, Dimension::Dimensionless, "", true),
     };
 }();
 

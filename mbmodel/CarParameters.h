@@ -58,6 +58,9 @@ struct CarParameters {
     double centerPlateFriction = 0;         ///< μ for yaw friction (full car)
     double centerPlateYawBristleAngle = 0;  ///< yaw at the friction limit [rad]
     double centerPlateRimPoints = 0;        ///< rim contact points in the full car
+    // --- the full car's flexible car body (car_body.torsion; docs/model.md, "Car-body torsion") ---
+    double carBodyTorsionalStiffness = 0;   ///< between the two halves, about the longitudinal axis [N·m/rad]
+    double carBodyTorsionalDampingRatio = 0;///< ζ of the two halves' relative twist, against I_roll/4
 
     double getCarBodyWeight() const { return bodyAndBolstersWeight - 2 * bolsterWeight; }
     /// A friction wedge's bristle stiffness [N/m]: its friction force at the Coulomb limit

@@ -34,6 +34,9 @@ enum class ChannelRole : unsigned {
     EnergyInput = 1u << 12,          ///< [J]
     EnergyDissipated = 1u << 13,     ///< [J]
     TruckSideLOverV = 1u << 14,      ///< ΣL/ΣV of the wheels of one truck side [ratio]
+    Pitch = 1u << 15,                ///< car-body pitch [deg]
+    Yaw = 1u << 16,                  ///< car-body yaw [deg]
+    CarBodyTwist = 1u << 17,         ///< rear half against front half of a twisting car body [deg]
 };
 constexpr ChannelRole operator|(ChannelRole a, ChannelRole b) { return ChannelRole(unsigned(a) | unsigned(b)); }
 constexpr bool hasRole(ChannelRole roles, ChannelRole r) { return (unsigned(roles) & unsigned(r)) != 0; }
@@ -54,6 +57,7 @@ struct ChannelLayout {
     std::vector<ChannelInfo> channels;
     std::vector<std::string> names;  ///< column names, channels[i].getColumn()
     int roll = -1;
+    int pitch = -1, yaw = -1, carBodyTwist = -1;  ///< −1: the model has no such motion
     std::vector<int> sideBearing;          ///< one side bearing each [lb]
     std::vector<int> centerPlate;          ///< one truck's plate total each [lb]
     std::vector<int> truckSideWheelLoad;   ///< two wheels, one truck side [lb]
@@ -85,6 +89,9 @@ struct ChannelLayout {
         const int i = int(channels.size());
         auto roleIs = [&](ChannelRole r) { return hasRole(info.roles, r); };
         if (roleIs(ChannelRole::Roll)) roll = i;
+        if (roleIs(ChannelRole::Pitch)) pitch = i;
+        if (roleIs(ChannelRole::Yaw)) yaw = i;
+        if (roleIs(ChannelRole::CarBodyTwist)) carBodyTwist = i;
         if (roleIs(ChannelRole::CenterPlate)) centerPlate.push_back(i);
         if (roleIs(ChannelRole::SideBearing)) sideBearing.push_back(i);
         if (roleIs(ChannelRole::TruckSideWheelLoad)) truckSideWheelLoad.push_back(i);

@@ -29,6 +29,8 @@ std::vector<Coordinate> describeMobilities(const RockingModel& model, const Stat
         for (int k = 0; k < n; ++k) c[first + k] = {body, n == 6 ? free6[k] : planar[k]};
     };
     label(model.getCarBody(), "car body");
+    // A twisting car body: its rear half's one mobility, the twist against the front half.
+    if (model.isCarBodyTwisting()) c[size_t(model.getCarBodyTwistPin().getFirstUIndex(s))] = {"car body", "twist"};
     for (int t = 0; t < model.getNumTrucks(); ++t) {
         const Truck& truck = model.getTruck(t);
         const std::string T = model.getNumTrucks() > 1 ? (t == 0 ? " F" : " R") : "";

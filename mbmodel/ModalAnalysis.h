@@ -23,7 +23,7 @@ namespace rockroll {
 struct Mode {
     std::string name;        ///< e.g. "car body heave", "car body lower sway-roll", "wheelset sway (2)"
     std::string body;        ///< the body kind holding most energy: "car body", "bolster", "wheelset"
-    std::string motion;      ///< heave | sway | roll | pitch | yaw | longitudinal | sway-roll
+    std::string motion;      ///< heave | sway | roll | pitch | yaw | longitudinal | sway-roll | twist
     double frequencyHz = 0;
     double dampingRatio = 0;
     double energyShare = 0;  ///< of the dominant body and motion

@@ -28,12 +28,20 @@ struct AttributionSwitches {
     bool isDefault() const { return unsprungGravity && unsprungMassScale == 1; }
 };
 
+/// The full car's car body (scenario table [car_body]; docs/model.md, "Car-body torsion").
+struct CarBodySettings {
+    /// false: one rigid body (the report's); true: two rigid halves joined on the car's
+    /// longitudinal axis by the car's torsional spring and damper.
+    bool torsion = false;
+};
+
 struct ModelOptions {
     double speed = 0;                     ///< [m/s]
     TrackEntry entry = TrackEntry::Lead;
     TrackMotion motion;                   ///< s(t); its speed is set from `speed` when left 0
     AttributionSwitches attribution;      ///< default: none
     WheelRailSettings wheelRail;          ///< scenario [wheel_rail]
+    CarBodySettings carBody;              ///< scenario [car_body] (full car)
 };
 
 }  // namespace rockroll

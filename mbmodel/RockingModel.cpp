@@ -55,13 +55,35 @@ RockingModel::RockingModel(const CarParameters& car, const TrackInput& track, Mo
     if (options_.attribution.isDefault()) Force::UniformGravity(forces_, matter_, Vec3(0, 0, -units::g));
 }
 
+void RockingModel::setTwistingCarBody(std::vector<CarBodyPart> parts, const MobilizedBody& twist, double stiffness,
+                                      double damping) {
+    carBodyParts_ = std::move(parts);
+    twist_ = twist;
+    torsionalStiffness_ = stiffness;
+    torsionalDamping_ = damping;
+    Force::MobilityLinearSpring(forces_, twist_, SimTK::MobilizerQIndex(0), stiffness, 0);
+    Force::MobilityLinearDamper(forces_, twist_, SimTK::MobilizerUIndex(0), damping);
+}
+
+double RockingModel::getCarBodyTwist(const State& s) const { return isCarBodyTwisting() ? twist_.getOneQ(s, 0) : 0.0; }
+
+double RockingModel::calcCarBodyTorque(const State& s) const {
+    return isCarBodyTwisting() ? torsionalStiffness_ * twist_.getOneQ(s, 0) + torsionalDamping_ * twist_.getOneU(s, 0)
+                               : 0.0;
+}
+
 void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec3>& p_CarBodyPlates) {
+    if (carBodyParts_.empty()) carBodyParts_.push_back({carBody_, 0});
     const AttributionSwitches& a = options_.attribution;
     for (size_t i = 0; i < specs.size(); ++i) {
         specs[i].unsprungGravity = a.unsprungGravity;
         specs[i].unsprungMassScale = a.unsprungMassScale;
         specs[i].wheelRail = options_.wheelRail;
-        trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBody_, p_CarBodyPlates[i], car_,
+        // The part over the truck: the front half carries the trucks ahead of the car's CG.
+        const int part = carBodyParts_.size() > 1 && p_CarBodyPlates[i][0] < 0 ? 1 : 0;
+        truckPart_.push_back(part);
+        const Vec3 p_PartPlate = p_CarBodyPlates[i] - Vec3(carBodyParts_[size_t(part)].x, 0, 0);
+        trucks_.push_back(std::make_unique<Truck>(matter_, forces_, carBodyParts_[size_t(part)].body, p_PartPlate, car_,
                                                   std::move(specs[i])));
     }
     if (!a.isDefault()) {
@@ -73,7 +95,7 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
     energyMeter_ = &addCustomForce<EnergyMeter>(forces_, forces_, *this);
     system_.realizeTopology();
     State s = makeStaticState(false);
-    staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];
+    staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];  // the halves' CGs are at one height
     declareChannels();
 }
 
@@ -120,10 +142,14 @@ void RockingModel::declareChannels() {
     ChannelTable<CarSample>& c = channels_;
     const double in = units::inch, deg = units::degree;
     c.add("roll", "deg", ChannelRole::Roll, [=](const CarSample& s) { return s.angles[0] / deg; });
-    c.add("pitch", "deg", [=](const CarSample& s) { return s.angles[1] / deg; });
-    c.add("yaw", "deg", [=](const CarSample& s) { return s.angles[2] / deg; });
+    c.add("pitch", "deg", ChannelRole::Pitch, [=](const CarSample& s) { return s.angles[1] / deg; });
+    c.add("yaw", "deg", ChannelRole::Yaw, [=](const CarSample& s) { return s.angles[2] / deg; });
     c.add("car_body_vertical", "in", [=](const CarSample& s) { return s.verticalFromStatic / in; });
     c.add("car_body_lateral", "in", [=](const CarSample& s) { return s.position[1] / in; });
+    if (isCarBodyTwisting()) {
+        c.add("car_body_twist", "deg", ChannelRole::CarBodyTwist, [=](const CarSample& s) { return s.twist / deg; });
+        c.add("car_body_torque", "lb_in", [=](const CarSample& s) { return s.torque / (units::lbf * in); });
+    }
     for (size_t i = 0; i < trucks_.size(); ++i) trucks_[i]->declareChannels(c, int(i));
     declareEnergyChannels(c);
     // Freight channels, after the energy audit's so that the columns above keep their places.
@@ -145,13 +171,24 @@ void RockingModel::declareChannels() {
 CarSample RockingModel::calcSample(const State& s) const {
     system_.realize(s, Stage::Acceleration);
     CarSample c;
+    // The car body's CG and roll: its halves' means when it twists (equal halves).
     c.angles = carBody_.getBodyRotation(s).convertRotationToBodyFixedXYZ();
-    c.position = carBody_.getBodyOriginLocation(s);
+    c.angles[0] = 0;
+    c.position = Vec3(0);
+    c.cgAcceleration = Vec3(0);
+    const double share = 1.0 / double(carBodyParts_.size());
+    for (const CarBodyPart& p : carBodyParts_) {
+        c.angles[0] += share * p.body.getBodyRotation(s).convertRotationToBodyFixedXYZ()[0];
+        c.position += share * p.body.getBodyOriginLocation(s);
+        c.cgAcceleration += share * p.body.getBodyOriginAcceleration(s);
+    }
     c.verticalFromStatic = c.position[2] - staticCarBodyHeight_;
-    c.cgAcceleration = carBody_.getBodyOriginAcceleration(s);
-    for (const auto& truck : trucks_) {
-        c.trucks.push_back(truck->calcSample(s));
-        c.trucks.back().carBodyAcceleration = carBody_.findStationAccelerationInGround(s, Vec3(truck->getX(), 0, 0));
+    c.twist = getCarBodyTwist(s);
+    c.torque = calcCarBodyTorque(s);
+    for (size_t i = 0; i < trucks_.size(); ++i) {
+        c.trucks.push_back(trucks_[i]->calcSample(s));
+        const CarBodyPart& p = carBodyParts_[size_t(truckPart_[i])];
+        c.trucks.back().carBodyAcceleration = p.body.findStationAccelerationInGround(s, Vec3(trucks_[i]->getX() - p.x, 0, 0));
     }
     const EnergyAccounts a = getEnergyAccounts(s);
     c.energyStored = calcMechanicalEnergy(s);
@@ -181,6 +218,8 @@ std::vector<int> RockingModel::getEnergyAuditYIndices() const {
 
 TruckPowers RockingModel::calcPowers(const State& s) const {
     TruckPowers sum;
+    // The twisting body's damper, C·θ̇².
+    if (isCarBodyTwisting()) sum.dissipated += torsionalDamping_ * SimTK::square(twist_.getOneU(s, 0));
     for (const auto& truck : trucks_) {
         const TruckPowers p = truck->calcPowers(s);
         sum.railInput += p.railInput;

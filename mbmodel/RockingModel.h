@@ -27,6 +27,13 @@ public:
     const Truck& getTruck(int i) const { return *trucks_[i]; }
     int getNumTrucks() const { return int(trucks_.size()); }
     const SimTK::MobilizedBody& getCarBody() const { return carBody_; }
+    /// The car body twists (two halves): its twist, rear half relative to front about the
+    /// car's x axis [rad], and the torsional moment the body carries, K·θ + C·θ̇ [N·m].
+    bool isCarBodyTwisting() const { return !twist_.isEmptyHandle(); }
+    /// The rear half's pin on the front half (a twisting car body only).
+    const SimTK::MobilizedBody& getCarBodyTwistPin() const { return twist_; }
+    double getCarBodyTwist(const SimTK::State& s) const;
+    double calcCarBodyTorque(const SimTK::State& s) const;
 
     /// State at t = 0 with every body in static equilibrium on level rails and
     /// every friction wedge unloaded.
@@ -62,8 +69,20 @@ public:
 
 protected:
     RockingModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
-    /// Called by derived constructors once the car body exists.
+    /// Called by derived constructors once the car body exists. p_CarBodyPlates: each
+    /// truck's center-plate point in the car frame (origin at the car body's CG); each
+    /// truck hangs from the car-body part over it (carBodyParts_).
     void addTrucks(std::vector<TruckSpec> specs, const std::vector<SimTK::Vec3>& p_CarBodyPlates);
+    /// A rigid piece of the car body: the whole body, or one half of a twisting body.
+    struct CarBodyPart {
+        SimTK::MobilizedBody body;
+        double x = 0;  ///< its CG (body origin) on the car, forward of the car's CG [m]
+    };
+    /// Declares the car body as two halves, the rear joined to the front by `twist`, a pin
+    /// about the car's longitudinal axis with torsional stiffness and damping [N·m/rad,
+    /// N·m·s/rad] (FullCarModel). Left alone: the car body is carBody_ alone, at x = 0.
+    void setTwistingCarBody(std::vector<CarBodyPart> parts, const SimTK::MobilizedBody& twist, double stiffness,
+                            double damping);
     virtual void setCarBodyHeight(SimTK::State& s, double z) const = 0;
     /// Rail input at a wheelset, averaging over the listed axle offsets.
     RailInputFunction makeRailInput(std::vector<double> trackOffsets) const;
@@ -75,7 +94,11 @@ protected:
     SimTK::MultibodySystem system_;
     SimTK::SimbodyMatterSubsystem matter_;
     SimTK::GeneralForceSubsystem forces_;
-    SimTK::MobilizedBody carBody_;
+    SimTK::MobilizedBody carBody_;  ///< the car body, or its front half when it twists
+    std::vector<CarBodyPart> carBodyParts_;
+    std::vector<int> truckPart_;    ///< each truck's part of carBodyParts_
+    SimTK::MobilizedBody twist_;    ///< the halves' pin when the car body twists
+    double torsionalStiffness_ = 0, torsionalDamping_ = 0;
     std::vector<std::unique_ptr<Truck>> trucks_;
     ChannelTable<CarSample> channels_;
     double staticCarBodyHeight_ = 0;  // z of the CG at rest [m]

@@ -110,6 +110,14 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
     r.steady.centerPlateLoadLb = maxOverChannels(h, layout.centerPlate, filter, steadyFrom).filteredMax;
 
     for (int c : layout.wheelLift) r.maxWheelLiftIn = std::max(r.maxWheelLiftIn, maxOf(getColumn(h, c)));
+    auto maxAbs = [&h](int c) {
+        if (c < 0) return std::numeric_limits<double>::quiet_NaN();
+        const auto x = getColumn(h, c);
+        return std::max(std::abs(maxOf(x)), std::abs(minOf(x)));
+    };
+    r.maxPitchDeg = maxAbs(layout.pitch);
+    r.maxYawDeg = maxAbs(layout.yaw);
+    r.maxCarBodyTwistDeg = maxAbs(layout.carBodyTwist);
 
     const Extremes wheels = maxOverChannels(h, layout.truckSideWheelLoad, filter);
     r.maxWheelLoadLb = wheels.filteredMax;

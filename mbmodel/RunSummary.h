@@ -50,6 +50,11 @@ struct RunSummary {
     double maxRollDeg = 0;
     double steadyRollAmplitudeDeg = 0;
     double peakToPeakRollDeg = 0;        ///< max − min of roll over the run
+    /// Largest |pitch|, |yaw| of the car body and |twist| of a twisting car body (rear half
+    /// against front) over the run, unfiltered as roll is; NaN: the model has no such motion.
+    double maxPitchDeg = std::numeric_limits<double>::quiet_NaN();
+    double maxYawDeg = std::numeric_limits<double>::quiet_NaN();
+    double maxCarBodyTwistDeg = std::numeric_limits<double>::quiet_NaN();
     double maxWheelLiftIn = 0;
     // Filtered maxima (headline) and raw peaks.
     double maxWheelLoadLb = 0, rawMaxWheelLoadLb = 0;          ///< two wheels, one truck side

@@ -52,10 +52,12 @@ struct TruckSample {
 /// Everything a Simbody rocking model records at one output time (its channels'
 /// evaluators read only this; RockingModel::calcSample fills it once per sample).
 struct CarSample {
-    SimTK::Vec3 angles{0};          ///< body-fixed XYZ roll, pitch, yaw [rad]
-    SimTK::Vec3 position{0};        ///< car-body CG [m]
+    SimTK::Vec3 angles{0};          ///< body-fixed XYZ roll, pitch, yaw [rad] (roll: the halves' mean)
+    SimTK::Vec3 position{0};        ///< car-body CG [m] (a twisting body's: the halves' mean)
     double verticalFromStatic = 0;  ///< CG height above its static height [m]
     SimTK::Vec3 cgAcceleration{0};  ///< car-body CG, ground axes [m/s²]
+    double twist = 0;               ///< rear half against front half about x (a twisting car body) [rad]
+    double torque = 0;              ///< torsional moment carried by the car body [N·m]
     std::vector<TruckSample> trucks;
     double energyStored = 0, energyInput = 0, energyDissipated = 0;  ///< [J]
 };

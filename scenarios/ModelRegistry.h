@@ -67,7 +67,7 @@ std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unu
 /// yaw, the truck spacing, and the center plate's yaw friction and rim (mbmodel/Truck.cpp).
 inline const std::vector<std::string_view> kFullCarOnlyParameters{
     "pitch_inertia", "yaw_inertia", "truck_spacing", "center_plate_friction", "center_plate_yaw_bristle_angle",
-    "center_plate_rim_points"};
+    "center_plate_rim_points", "car_body_torsional_stiffness", "car_body_torsional_damping_ratio"};
 
 class ModelRegistry {
 public:

@@ -570,9 +570,10 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     readCar(root, source, sc);
     readTrack(root, source, sc);
     readRun(root, source, sc);
-    for (const char* table : {"integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "criteria"})
+    for (const char* table : {"integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "car_body", "criteria"})
         readFieldTable(root, table, source, sc);
-    top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "criteria"});
+    top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "car_body",
+                       "criteria"});
     sc.settingsSet = listKeys(root);
     return sc;
 }

@@ -44,6 +44,7 @@ struct Scenario {
     ReducedOptions reduced;            ///< [reduced] table: the reduced model's truck weight
     AttributionSwitches attribution;   ///< [attribution] table: Simbody truck gravity / mass (attribution only)
     WheelRailSettings wheelRail;       ///< [wheel_rail] table: lateral formulation, creep, flange
+    CarBodySettings carBody;           ///< [car_body] table: the full car's rigid or twisting car body
     CriteriaLimits criteria;           ///< [criteria] table: limits of the summary's criteria
 };
 

@@ -184,6 +184,8 @@ std::vector<ScenarioField> makeSchema() {
                          {RR_NUMBER(wheelRail.flangeHeight)}));
     f.push_back(quantity("wheel_rail.flange_stiffness_scale", Dimension::Dimensionless, "", 0.01, 100, false, false,
                          "1", {RR_NUMBER(wheelRail.flangeStiffnessScale)}));
+    // [car_body]: the full car's car body (docs/model.md, "Car-body torsion").
+    f.push_back(flag("car_body.torsion", "false", {RR_FLAG(carBody.torsion)}));
     // [reduced], [attribution]
     f.push_back(flag("reduced.truck_weight", "false", {RR_FLAG(reduced.truckWeight)}));
     f.push_back(flag("attribution.unsprung_gravity", "true", {RR_FLAG(attribution.unsprungGravity)}));

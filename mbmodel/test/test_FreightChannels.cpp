@@ -135,7 +135,7 @@ TEST(FreightChannels, UnloadingIsOneMinusLoadOverStaticLoad) {
 TEST(FreightChannels, LOverVIsTheLateralOverTheVerticalContactForceOfEachWheel) {
     // Simbody half car, a state off equilibrium (wheelset shifted, bodies rolled), against the contact's own forces.
     const Scenario sc = makeCase("halfcar", 0.75, 16.5, 1);
-    const HalfCarModel model(sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc), {}, sc.wheelRail});
+    const HalfCarModel model(sc.car, TrackInput(sc.track), ModelOptions{sc.speed, sc.entry, makeTrackMotion(sc), {}, sc.wheelRail, {}});
     SimTK::State s = model.makeStaticState();
     model.getTruck(0).getWheelset(0).setOneQ(s, 1, 0.002);
     model.getTruck(0).getWheelset(0).setOneU(s, 1, 0.05);

@@ -154,3 +154,45 @@ TEST(MeasuredTrack, SpreadsheetCsvWithByteOrderMarkAndCrlfRuns) {
         EXPECT_EQ(runScenario(sc).result.history.samples, runScenario(reference).result.history.samples);
     }
 }
+
+// scenarios/tracks/federal-harmonics-1.25in.csv holds the federal "harmonics" limit as its
+// generator (scripts/make-federal-harmonics-track.py) states it: seven low joints, alternating
+// rails half a 39 ft rail apart, the cross-level changing by 1.25 in from each to the next
+// (six consecutive pairs), level track before and after.
+TEST(MeasuredTrack, FederalHarmonicsTableObeysItsRule) {
+    const Scenario sc = loadScenarioFile(kScenarios + "/federal-harmonics.toml");
+    EXPECT_FALSE(sc.track.repeat);
+    const TrackInput track(sc.track);
+    // The low joints: each rail's local minima below level, from the table's rows.
+    struct Joint {
+        double s;
+        int rail;
+    };
+    std::vector<Joint> joints;
+    const auto& rows = sc.track.measured;
+    for (int rail : {0, 1})
+        for (size_t i = 1; i + 1 < rows.size(); ++i) {
+            const double z = track.calcRails(rows[i].distance).z[size_t(rail)];
+            if (z < -1e-9 && z < track.calcRails(rows[i - 1].distance).z[size_t(rail)] &&
+                z < track.calcRails(rows[i + 1].distance).z[size_t(rail)])
+                joints.push_back({rows[i].distance, rail});
+        }
+    std::sort(joints.begin(), joints.end(), [](const Joint& a, const Joint& b) { return a.s < b.s; });
+    ASSERT_EQ(joints.size(), 7u);
+    for (size_t k = 1; k < joints.size(); ++k) {
+        EXPECT_NE(joints[k].rail, joints[k - 1].rail) << "joints stagger from rail to rail";
+        EXPECT_NEAR(joints[k].s - joints[k - 1].s, 19.5 * units::foot, 1e-9);
+        const double difference = track.calcCrossLevel(joints[k].s) - track.calcCrossLevel(joints[k - 1].s);
+        EXPECT_NEAR(std::abs(difference), 1.25 * units::inch, 1e-6 * units::inch) << "pair " << k;
+    }
+    // No larger cross-level difference between any two points of the table within a pair's spacing.
+    double largest = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+        for (size_t j = i + 1; j < rows.size() && rows[j].distance - rows[i].distance <= 19.5 * units::foot + 1e-9; ++j)
+            largest = std::max(largest, std::abs(track.calcCrossLevel(rows[j].distance) - track.calcCrossLevel(rows[i].distance)));
+    EXPECT_NEAR(largest, 1.25 * units::inch, 1e-6 * units::inch);
+    // Level at the start (the car starts at rest on level rails) and after the last dip.
+    EXPECT_NEAR(track.calcLeadInDistance(), 39 * units::foot, 1e-9);
+    EXPECT_EQ(track.calcRails(rows.back().distance).z[0], 0.0);
+    EXPECT_EQ(track.calcRails(rows.back().distance).z[1], 0.0);
+}

@@ -19,7 +19,7 @@ std::vector<Mode> calcCarModes(const std::string& carName, const std::string& mo
     level.railLength = 39 * units::foot;
     const auto m = ModelRegistry::get().getModel(model).makeMultibody(
         makeModalCar(makeCarParameters(carName)), TrackInput(level),
-        ModelOptions{15 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}});
+        ModelOptions{15 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}, CarBodySettings{}});
     return calcModes(*m);
 }
 const Mode& find(const std::vector<Mode>& modes, const std::string& name) {

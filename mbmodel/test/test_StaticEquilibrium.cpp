@@ -32,7 +32,7 @@ TEST_P(StaticEquilibrium, AccelerationsVanishAndLoadsEqualWeightShares) {
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
     const auto model = ModelRegistry::get().getModel(GetParam().model).makeMultibody(
-        car, TrackInput(track), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}});
+        car, TrackInput(track), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}, CarBodySettings{}});
     const SimTK::State s = model->makeStaticState();
     model->getSystem().realize(s, SimTK::Stage::Acceleration);
     const SimTK::Vector& udot = s.getUDot();

@@ -72,7 +72,7 @@ TEST(TruckStatics, SimbodyHalfAndFullCarCarryTheStaticLoads) {
             const CarParameters car = makeCarParameters(name);
             const TruckStatics t = makeStatics(car);
             const auto m = ModelRegistry::get().getModel(model).makeMultibody(
-                car, TrackInput(TrackSpec{}), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, {}, {}});
+                car, TrackInput(TrackSpec{}), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, {}, {}, {}});
             const SimTK::State s = m->makeStaticState();
             m->getSystem().realize(s, SimTK::Stage::Acceleration);
             std::vector<double> v;
@@ -154,7 +154,7 @@ TEST(TruckStatics, SameDeflectionGivesTheSameSpringForceInEveryFormulation) {
         const double dz = -1.0 * units::inch;
 
         const auto m = ModelRegistry::get().getModel("halfcar").makeMultibody(
-            car, TrackInput(TrackSpec{}), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, {}, {}});
+            car, TrackInput(TrackSpec{}), ModelOptions{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, {}, {}, {}});
         SimTK::State s = m->makeStaticState();
         const SimTK::MobilizedBody& bolster = m->getTruck(0).getBolster();
         bolster.setOneQ(s, 2, bolster.getOneQ(s, 2) + dz);

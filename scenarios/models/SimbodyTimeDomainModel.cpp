@@ -29,7 +29,7 @@ std::vector<StateKind> SimbodyTimeDomainModel::getStateKinds() const {
 }
 
 ModelOptions makeModelOptions(const Scenario& sc, const TrackMotion& motion) {
-    return ModelOptions{sc.speed, sc.entry, motion, sc.attribution, sc.wheelRail};
+    return ModelOptions{sc.speed, sc.entry, motion, sc.attribution, sc.wheelRail, sc.carBody};
 }
 
 namespace {
@@ -64,6 +64,7 @@ ModelDescriptor describeFullCarModel() {
     ModelDescriptor d = describeSimbodyCar<FullCarModel>(
         model_names::kFullCar, "Simbody full car: car body, two trucks, four wheelsets, with pitch and yaw");
     d.settings.emplace_back("track.entry");  // where the trailing truck meets the track (FullCarModel.cpp)
+    d.settings.emplace_back("car_body.*");   // its car body's torsion (FullCarModel.cpp)
     return d;
 }
 

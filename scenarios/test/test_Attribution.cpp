@@ -37,7 +37,7 @@ struct Static {
 
 Static makeStatic(const std::string& modelName, AttributionSwitches a) {
     Static out;
-    ModelOptions options{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}};
+    ModelOptions options{16.5 * units::mph, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{}, WheelRailSettings{}, CarBodySettings{}};
     options.attribution = a;
     TrackSpec track;
     track.amplitude = 0.75 * units::inch;
