@@ -78,11 +78,8 @@ std::string makeFromRestPart(const Settings& s, const std::vector<DofConfig>& co
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < configs.size(); ++i)
         jobs.push_back([&, i] {
-            Scenario sc = makeDofScenario(configs[i]);
-            sc.track.amplitude = 0.75 * units::inch;
-            sc.speed = 16.5 * units::mph;
-            sc.run.duration = s.runDuration;
-            sc.run.outputRate = 100;
+            const Scenario sc = makeRestScenario(s, makeDofScenario(configs[i]),
+                                                 {"70ton-loaded", 0.75, 16.5, model_names::kFullCar});
             try {
                 const ScenarioRun run = runScenario(sc);
                 out[i].summary = run.summary;

@@ -75,21 +75,32 @@ std::string describeStatistics(const Settings& s) {
         s.runDuration, SummaryOptions{}.steadyCycles);
 }
 
+Scenario makeRestScenario(const Settings& s, const Scenario& car, const RestRun& r) {
+    Scenario sc = car;
+    sc.model = r.model;
+    sc.track.amplitude = r.amplitudeIn * units::inch;
+    sc.speed = r.speedMph * units::mph;
+    sc.run.duration = s.runDuration;
+    sc.run.outputRate = 100;
+    return sc;
+}
+
+std::map<std::string, Scenario> loadCarScenarios(const std::vector<std::string>& names) {
+    std::map<std::string, Scenario> cars;
+    for (const auto& n : names)
+        if (!cars.count(n)) cars.emplace(n, loadCarScenario(n));
+    return cars;
+}
+
 std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs) {
     std::vector<RunSummary> out(runs.size());
-    std::map<std::string, Scenario> cars;  // each car's file read once, before the threads start
-    for (const auto& r : runs)
-        if (!cars.count(r.car)) cars.emplace(r.car, loadCarScenario(r.car));
+    std::vector<std::string> names;
+    for (const auto& r : runs) names.push_back(r.car);
+    const std::map<std::string, Scenario> cars = loadCarScenarios(names);  // before the threads start
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < runs.size(); ++i)
         jobs.push_back([&, i] {
-            Scenario sc = cars.at(runs[i].car);
-            sc.model = runs[i].model;
-            sc.track.amplitude = runs[i].amplitudeIn * units::inch;
-            sc.speed = runs[i].speedMph * units::mph;
-            sc.run.duration = s.runDuration;
-            sc.run.outputRate = 100;
-            out[i] = runScenario(sc).summary;
+            out[i] = runScenario(makeRestScenario(s, cars.at(runs[i].car), runs[i])).summary;
         });
     runJobs(jobs, s.jobs);
     return out;

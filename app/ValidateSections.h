@@ -195,6 +195,10 @@ struct RestRun {
 };
 /// The runs, from rest for s.runDuration, recorded at 100 Hz, in parallel; results by index.
 std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs);
+/// `car` (its scenario file) set up as runFromRest runs `r`.
+Scenario makeRestScenario(const Settings& s, const Scenario& car, const RestRun& r);
+/// Each named car's scenario file, read once (before threads start).
+std::map<std::string, Scenario> loadCarScenarios(const std::vector<std::string>& names);
 
 /// Per model, in order: its run from rest (fromRest, the summary of that model's
 /// RestRun at this case) and section 2's up- and down-sweep points nearest `mph`

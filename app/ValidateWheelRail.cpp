@@ -118,20 +118,15 @@ WheelRailRun makeRun(const std::string& car, const std::string& model, LateralWh
 }
 
 std::vector<WheelRailRun> runAll(const Settings& s, std::vector<WheelRailRun> runs) {
-    std::map<std::string, Scenario> cars;  // each car's file read once, before the threads start
-    for (const auto& r : runs)
-        if (!cars.count(r.car)) cars.emplace(r.car, loadCarScenario(r.car));
+    std::vector<std::string> names;
+    for (const auto& r : runs) names.push_back(r.car);
+    const std::map<std::string, Scenario> cars = loadCarScenarios(names);  // before the threads start
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < runs.size(); ++i)
         jobs.push_back([&, i] {
             WheelRailRun& r = runs[i];
-            Scenario sc = cars.at(r.car);
-            sc.model = r.model;
+            Scenario sc = makeRestScenario(s, cars.at(r.car), {r.car, r.amplitudeIn, r.speedMph, r.model});
             sc.wheelRail.lateral = r.lateral;
-            sc.track.amplitude = r.amplitudeIn * units::inch;
-            sc.speed = r.speedMph * units::mph;
-            sc.run.duration = s.runDuration;
-            sc.run.outputRate = 100;
             if (r.lateral == LateralWheelRail::CreepAndFlange)
                 r.nadalLimit = calcNadalLimit(sc.wheelRail.flangeAngle, sc.wheelRail.friction);
             try {
