@@ -92,17 +92,20 @@ std::map<std::string, Scenario> loadCarScenarios(const std::vector<std::string>&
     return cars;
 }
 
-std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs) {
-    std::vector<RunSummary> out(runs.size());
+void forEachRestRun(const Settings& s, const std::vector<RestRun>& runs,
+                    const std::function<void(size_t, const Scenario&)>& run) {
     std::vector<std::string> names;
     for (const auto& r : runs) names.push_back(r.car);
     const std::map<std::string, Scenario> cars = loadCarScenarios(names);  // before the threads start
     std::vector<std::function<void()>> jobs;
     for (size_t i = 0; i < runs.size(); ++i)
-        jobs.push_back([&, i] {
-            out[i] = runScenario(makeRestScenario(s, cars.at(runs[i].car), runs[i])).summary;
-        });
+        jobs.push_back([&, i] { run(i, makeRestScenario(s, cars.at(runs[i].car), runs[i])); });
     runJobs(jobs, s.jobs);
+}
+
+std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs) {
+    std::vector<RunSummary> out(runs.size());
+    forEachRestRun(s, runs, [&](size_t i, const Scenario& sc) { out[i] = runScenario(sc).summary; });
     return out;
 }
 

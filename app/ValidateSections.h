@@ -195,6 +195,10 @@ struct RestRun {
 };
 /// The runs, from rest for s.runDuration, recorded at 100 Hz, in parallel; results by index.
 std::vector<RunSummary> runFromRest(const Settings& s, const std::vector<RestRun>& runs);
+/// Calls run(i, scenario of runs[i]) for every run, in parallel (s.jobs threads): each car's
+/// scenario file read once, set up as runFromRest runs it (makeRestScenario).
+void forEachRestRun(const Settings& s, const std::vector<RestRun>& runs,
+                    const std::function<void(size_t, const Scenario&)>& run);
 /// `car` (its scenario file) set up as runFromRest runs `r`.
 Scenario makeRestScenario(const Settings& s, const Scenario& car, const RestRun& r);
 /// Each named car's scenario file, read once (before threads start).

@@ -118,27 +118,23 @@ WheelRailRun makeRun(const std::string& car, const std::string& model, LateralWh
 }
 
 std::vector<WheelRailRun> runAll(const Settings& s, std::vector<WheelRailRun> runs) {
-    std::vector<std::string> names;
-    for (const auto& r : runs) names.push_back(r.car);
-    const std::map<std::string, Scenario> cars = loadCarScenarios(names);  // before the threads start
-    std::vector<std::function<void()>> jobs;
-    for (size_t i = 0; i < runs.size(); ++i)
-        jobs.push_back([&, i] {
-            WheelRailRun& r = runs[i];
-            Scenario sc = makeRestScenario(s, cars.at(r.car), {r.car, r.amplitudeIn, r.speedMph, r.model});
-            sc.wheelRail.lateral = r.lateral;
-            if (r.lateral == LateralWheelRail::CreepAndFlange)
-                r.nadalLimit = calcNadalLimit(sc.wheelRail.flangeAngle, sc.wheelRail.friction);
-            try {
-                const ScenarioRun run = runScenario(sc);
-                r.summary = run.summary;
-                r.climb = measureClimb(run, resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail).flangeClimbTime);
-            } catch (const std::exception& e) {
-                r.failed = true;
-                r.error = e.what();
-            }
-        });
-    runJobs(jobs, s.jobs);
+    std::vector<RestRun> rest;
+    for (const auto& r : runs) rest.push_back({r.car, r.amplitudeIn, r.speedMph, r.model});
+    forEachRestRun(s, rest, [&](size_t i, const Scenario& car) {
+        WheelRailRun& r = runs[i];
+        Scenario sc = car;
+        sc.wheelRail.lateral = r.lateral;
+        if (r.lateral == LateralWheelRail::CreepAndFlange)
+            r.nadalLimit = calcNadalLimit(sc.wheelRail.flangeAngle, sc.wheelRail.friction);
+        try {
+            const ScenarioRun run = runScenario(sc);
+            r.summary = run.summary;
+            r.climb = measureClimb(run, resolveRunLimits(sc.run.limits, sc.car, sc.wheelRail).flangeClimbTime);
+        } catch (const std::exception& e) {
+            r.failed = true;
+            r.error = e.what();
+        }
+    });
     return runs;
 }
 
