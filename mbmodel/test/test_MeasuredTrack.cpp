@@ -198,8 +198,8 @@ TEST(MeasuredTrack, FederalHarmonicsTableObeysItsRule) {
 }
 
 // On the harmonics track's level lead-in (39 ft) the rails do no work: the worst energy-balance
-// error is taken from 0.5 s after the perturbation starts, not from 0.5 s, where the ratio of
-// two near-zero energies printed 3e8 % (measured before the change).
+// error is taken from 0.5 s after the perturbation starts: from 0.5 s it would be the ratio of
+// two near-zero energies (docs/validation.md, "Statistics").
 TEST(MeasuredTrack, TheWorstEnergyErrorIsTakenAfterTheLevelLeadIn) {
     Scenario sc = loadScenarioFile(kScenarios + "/federal-harmonics.toml");
     sc.model = "halfcar";
