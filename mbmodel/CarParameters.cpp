@@ -14,7 +14,10 @@ const std::vector<CarParameterInfo> kTable = [] {
     using P = CarParameters;
     // The values and their sources are data: scenarios/cars/*.toml.
     auto e = [](const char* key, double P::*m, Dimension d, const char* unit, bool mayBeZero = false,
-                bool integer = false) { return CarParameterInfo{key, m, d, unit, mayBeZero, integer}; };
+                bool integer = false) { return CarParameterInfo{key, m, d, unit, mayBeZero, integer, false}; };
+    auto offset = [](const char* key, double P::*m) {
+        return CarParameterInfo{key, m, Dimension::Length, "in", true, false, true};
+    };
     return std::vector<CarParameterInfo>{
         e("body_and_bolsters_weight", &P::bodyAndBolstersWeight, Dimension::Force, "lb"),
         e("wheelset_weight", &P::wheelsetWeight, Dimension::Force, "lb"),
@@ -60,6 +63,8 @@ const std::vector<CarParameterInfo> kTable = [] {
         e("center_plate_rim_points", &P::centerPlateRimPoints, Dimension::Dimensionless, "", false, true),
         e("car_body_torsional_stiffness", &P::carBodyTorsionalStiffness, Dimension::AngularStiffness, "lb*in/rad"),
         e("car_body_torsional_damping_ratio", &P::carBodyTorsionalDampingRatio, Dimension::Dimensionless, "", true),
+        offset("cg_longitudinal_offset", &P::cgLongitudinalOffset),
+        offset("cg_lateral_offset", &P::cgLateralOffset),
     };
 }();
 

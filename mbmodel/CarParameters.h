@@ -61,6 +61,9 @@ struct CarParameters {
     // --- the full car's flexible car body (car_body.torsion; docs/model.md, "Car-body torsion") ---
     double carBodyTorsionalStiffness = 0;   ///< between the two halves, about the longitudinal axis [N·m/rad]
     double carBodyTorsionalDampingRatio = 0;///< ζ of the two halves' relative twist, against I_roll/4
+    // --- off-centre lading (full car; docs/model.md, "Off-centre lading") ----------
+    double cgLongitudinalOffset = 0;        ///< car body's CG ahead of mid-way between the truck centres [m]
+    double cgLateralOffset = 0;             ///< car body's CG to the left of the car's centre line [m]
 
     double getCarBodyWeight() const { return bodyAndBolstersWeight - 2 * bolsterWeight; }
     /// A friction wedge's bristle stiffness [N/m]: its friction force at the Coulomb limit
@@ -77,6 +80,7 @@ struct CarParameterInfo {
     const char* displayUnit;   ///< unit used in docs and printouts
     bool mayBeZero = false;    ///< zero is meaningful (no clearance, no damping, no friction)
     bool integer = false;      ///< a count: whole numbers only (center_plate_rim_points)
+    bool isSigned = false;     ///< any finite value, negative included (an offset)
 };
 
 const std::vector<CarParameterInfo>& getCarParameterTable();

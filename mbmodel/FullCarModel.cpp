@@ -30,7 +30,13 @@ FullCarModel::FullCarModel(const CarParameters& car, const TrackInput& track, Mo
         frontHalfOffset_ = b.halfOffset;
     }
 
+    // Off-centre lading (docs/model.md, "Off-centre lading"): the car body's CG sits at
+    // (e_x, e_y) from the point mid-way between the truck centres on the centre line, so
+    // the lever rule shares its weight W between the trucks as W·(½ ± e_x/s).
     const double half = car.truckSpacing / 2, B = car.wheelbase;
+    const double ex = car.cgLongitudinalOffset, ey = car.cgLateralOffset;
+    cgOffset_ = Vec3(ex, ey, 0);
+    if (ex != 0 || ey != 0) setStaticStateNeedsSolving();
     const double leadAxle = half + B / 2;
     std::vector<TruckSpec> trucks;
     std::vector<Vec3> plates;
@@ -40,19 +46,31 @@ FullCarModel::FullCarModel(const CarParameters& car, const TrackInput& track, Mo
         // -Wrestrict for std::string = (cond ? "F" : "R") (a known GCC 12 false positive).
         t.label.assign(1, sign > 0 ? 'F' : 'R');
         t.x = sign * half;
-        t.carBodyLoad = car.getCarBodyWeight() / 2;
+        t.carBodyLoad = car.getCarBodyWeight() * (0.5 + sign * ex / car.truckSpacing);
         t.threeDimensional = true;
         const double entryAxle = options.entry == TrackEntry::Lead ? leadAxle : t.x + B / 2;
         for (double ax : {t.x + B / 2, t.x - B / 2})
             t.wheelsets.push_back({ax, 1, makeRailInput({ax - entryAxle})});
         trucks.push_back(std::move(t));
-        plates.push_back(Vec3(sign * half, 0, -car.cgAboveCenterPlate));  // car frame (addTrucks)
+        plates.push_back(Vec3(sign * half - ex, -ey, -car.cgAboveCenterPlate));  // car frame (addTrucks)
     }
     addTrucks(std::move(trucks), plates);
 }
 
-void FullCarModel::setCarBodyHeight(State& s, double z) const {
-    carBody_.setQToFitTranslation(s, Vec3(frontHalfOffset_, 0, z));
+void FullCarModel::setCarBodyPose(State& s, const std::vector<double>& plateZ) const {
+    const double h = car_.cgAboveCenterPlate;
+    if (plateZ[0] == plateZ[1]) {
+        carBody_.setQToFitTranslation(s, cgOffset_ + Vec3(frontHalfOffset_, 0, plateZ[0] + h));
+        return;
+    }
+    // Pitched through both plate points: a car-frame point (x, 0, −h) rotated by θ about y
+    // is at height z_CG − x·sin θ − h·cos θ, and the plates are the truck spacing s apart.
+    const double sinTheta = (plateZ[1] - plateZ[0]) / car_.truckSpacing;
+    const double theta = std::asin(sinTheta);
+    const double zCG = plateZ[0] + (car_.truckSpacing / 2 - cgOffset_[0]) * sinTheta + h * std::cos(theta);
+    const Rotation R_GB(theta, SimTK::YAxis);
+    carBody_.setQToFitTransform(s, Transform(R_GB, Vec3(cgOffset_[0], cgOffset_[1], zCG) +
+                                                      R_GB * Vec3(frontHalfOffset_, 0, 0)));
 }
 
 TwistingCarBody calcTwistingCarBody(const CarParameters& car) {

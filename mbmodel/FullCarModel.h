@@ -39,10 +39,11 @@ public:
     FullCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
 
 protected:
-    void setCarBodyHeight(SimTK::State& s, double z) const override;
+    void setCarBodyPose(SimTK::State& s, const std::vector<double>& plateZ) const override;
 
 private:
     double frontHalfOffset_ = 0;  ///< the front half's CG ahead of the car's (twisting body) [m]
+    SimTK::Vec3 cgOffset_{0};     ///< the car body's CG from mid-way between the truck centres [m]
 };
 
 }  // namespace rockroll

@@ -17,6 +17,8 @@ HalfCarModel::HalfCarModel(const CarParameters& car, const TrackInput& track, Mo
     addTrucks({truck}, {Vec3(0, 0, -car.cgAboveCenterPlate)});
 }
 
-void HalfCarModel::setCarBodyHeight(State& s, double z) const { carBody_.setOneQ(s, 2, z); }
+void HalfCarModel::setCarBodyPose(State& s, const std::vector<double>& plateZ) const {
+    carBody_.setOneQ(s, 2, plateZ[0] + car_.cgAboveCenterPlate);
+}
 
 }  // namespace rockroll

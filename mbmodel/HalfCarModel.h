@@ -14,7 +14,7 @@ public:
     HalfCarModel(const CarParameters& car, const TrackInput& track, ModelOptions options);
 
 protected:
-    void setCarBodyHeight(SimTK::State& s, double z) const override;
+    void setCarBodyPose(SimTK::State& s, const std::vector<double>& plateZ) const override;
 };
 
 }  // namespace rockroll

@@ -96,6 +96,14 @@ void RockingModel::addTrucks(std::vector<TruckSpec> specs, const std::vector<Vec
     system_.realizeTopology();
     State s = makeStaticState(false);
     staticCarBodyHeight_ = carBody_.getBodyOriginLocation(s)[2];  // the halves' CGs are at one height
+    for (const auto& truck : trucks_) {
+        StaticWheelLoads loads;
+        for (int w = 0; w < truck->getNumWheelsets(); ++w) {
+            const WheelRailForces f = truck->getWheelRail(w).calcForces(s);
+            loads.push_back({f.vertical[0], f.vertical[1]});
+        }
+        staticWheelLoads_.push_back(std::move(loads));
+    }
     declareChannels();
 }
 
@@ -122,10 +130,11 @@ RailInputFunction RockingModel::makeRailInput(std::vector<double> trackOffsets) 
 State RockingModel::makeStaticState(bool requireLevelRails) const {
     State s = system_.getDefaultState();
     s.setTime(0);
-    double plateZ = 0;
-    for (const auto& truck : trucks_) plateZ += truck->setStaticState(s) / double(trucks_.size());
-    setCarBodyHeight(s, plateZ + car_.cgAboveCenterPlate);
+    std::vector<double> plateZ;
+    for (const auto& truck : trucks_) plateZ.push_back(truck->setStaticState(s));
+    setCarBodyPose(s, plateZ);
     resetEnergyAccounts(s);
+    if (staticSolve_) solveStaticEquilibrium(s);
     for (const auto& truck : trucks_)
         for (int i = 0; i < truck->getNumWheelsets() && requireLevelRails; ++i) {
             const RailHeights r = truck->getWheelRail(i).getRailHeights(0);
@@ -136,6 +145,67 @@ State RockingModel::makeStaticState(bool requireLevelRails) const {
         }
     system_.realize(s, Stage::Velocity);
     return s;
+}
+
+void RockingModel::solveStaticEquilibrium(State& s) const {
+    // Tolerance on the generalized accelerations [m/s², rad/s²]: roundoff in them is
+    // about 1e-12 (forces of 1e6 N on masses of 1e2 kg); 1e-8 is below anything a run sees.
+    constexpr double kTolerance = 1e-8, kStep = 1e-7;
+    constexpr int kMaxIterations = 100;
+    const int n = s.getNU();
+    s.updU() = 0;
+    // The generalized forces f = M·u̇ at rest: the negative gradient of the potential energy V
+    // (at rest, with every friction bristle at its unloaded state, every force is elastic or
+    // gravity).
+    Vector udot;
+    auto calcForces = [&](State& x) {
+        system_.realize(x, Stage::Acceleration);
+        udot = x.getUDot();
+        Vector f;
+        matter_.multiplyByM(x, udot, f);
+        return f;
+    };
+    // Moves x by q += N(q)·du from the positions q0 (N at q0), quaternions renormalized.
+    auto move = [this](State& x, const Vector& q0, const Vector& du) {
+        x.updQ() = q0;
+        system_.realize(x, Stage::Position);
+        Vector dq;
+        matter_.multiplyByN(x, false, du, dq);
+        x.updQ() = q0 + dq;
+        matter_.normalizeQuaternions(x);
+    };
+    Vector f = calcForces(s);
+    for (int it = 0; it < kMaxIterations && udot.normInf() >= kTolerance; ++it) {
+        const Vector q0 = s.getQ();
+        const double V0 = system_.calcPotentialEnergy(s), norm0 = f.norm();
+        SimTK::Matrix K(n, n);  // the stiffness −∂f/∂u
+        for (int j = 0; j < n; ++j) {
+            Vector du(n, 0.0);
+            du[j] = kStep;
+            move(s, q0, du);
+            const Vector plus = calcForces(s);
+            move(s, q0, -du);
+            K(j) = (calcForces(s) - plus) / (2 * kStep);
+        }
+        Vector du;
+        SimTK::FactorQTZ(K, 1e-12).solve(f, du);
+        // Newton's step, halved until the potential energy (or the forces' norm, where the
+        // energy no longer resolves the change) falls: a rim point lifting or a side bearing
+        // touching makes the forces piecewise linear, and a full step can overshoot.
+        double step = 1;
+        for (int halvings = 0;; ++halvings) {
+            move(s, q0, step * du);
+            f = calcForces(s);
+            if (system_.calcPotentialEnergy(s) < V0 || f.norm() < norm0 || halvings == 50) break;
+            step /= 2;
+        }
+    }
+    if (udot.normInf() >= kTolerance)
+        throw std::runtime_error(fmt::format(
+            "the static equilibrium of the off-centre car body did not converge in {} Newton steps: largest "
+            "generalized acceleration {:.3g} (m/s^2 or rad/s^2) against {:.0e}; with this offset the car may have no "
+            "static equilibrium (a wheel lifting off, the body tipping)",
+            kMaxIterations, udot.normInf(), kTolerance));
 }
 
 void RockingModel::declareChannels() {
@@ -153,7 +223,8 @@ void RockingModel::declareChannels() {
     for (size_t i = 0; i < trucks_.size(); ++i) trucks_[i]->declareChannels(c, int(i));
     declareEnergyChannels(c);
     // Freight channels, after the energy audit's so that the columns above keep their places.
-    for (size_t i = 0; i < trucks_.size(); ++i) trucks_[i]->declareFreightChannels(c, int(i));
+    for (size_t i = 0; i < trucks_.size(); ++i)
+        trucks_[i]->declareFreightChannels(c, int(i), staticSolve_ ? staticWheelLoads_[i] : StaticWheelLoads{});
     c.add("car_body_vertical_accel", "g", ChannelRole::CarBodyVerticalAccel,
           [](const CarSample& s) { return s.cgAcceleration[2] / units::g; });
     c.add("car_body_lateral_accel", "g", ChannelRole::CarBodyLateralAccel,

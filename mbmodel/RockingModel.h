@@ -8,6 +8,7 @@
 #include "mbmodel/Truck.h"
 
 #include <Simbody.h>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,7 +37,9 @@ public:
     double calcCarBodyTorque(const SimTK::State& s) const;
 
     /// State at t = 0 with every body in static equilibrium on level rails and
-    /// every friction wedge unloaded.
+    /// every friction wedge unloaded. The trucks' statics place it (TruckStatics.h); an
+    /// off-centre car body is then brought to equilibrium by Newton's method
+    /// (solveStaticEquilibrium).
     /// requireLevelRails: refuse (throw) unless the rails are level at t = 0, as
     /// a run from rest needs; a run continuing a sweep only uses the geometry.
     SimTK::State makeStaticState(bool requireLevelRails = true) const;
@@ -64,6 +67,11 @@ public:
     void resetEnergyAccounts(SimTK::State& s) const;
     /// Where the energy audit's integrals sit in the flat state Y = [q, u, z].
     std::vector<int> getEnergyAuditYIndices() const;
+    /// Vertical load of one wheel in the static state (makeStaticState) [N]: wheelset body
+    /// `wheelset` of truck `truck`, side kLeft or kRight (CarSide.h).
+    double getStaticWheelLoad(int truck, int wheelset, int side) const {
+        return staticWheelLoads_[size_t(truck)][size_t(wheelset)][size_t(side)];
+    }
     /// Sum of every truck's element powers [W].
     TruckPowers calcPowers(const SimTK::State& s) const;
 
@@ -83,7 +91,18 @@ protected:
     /// N·m·s/rad] (FullCarModel). Left alone: the car body is carBody_ alone, at x = 0.
     void setTwistingCarBody(std::vector<CarBodyPart> parts, const SimTK::MobilizedBody& twist, double stiffness,
                             double damping);
-    virtual void setCarBodyHeight(SimTK::State& s, double z) const = 0;
+    /// Places the car body on its trucks: each truck's center-plate point (p_CarBodyPlates
+    /// of addTrucks) at the ground height plateZ[truck] [m].
+    virtual void setCarBodyPose(SimTK::State& s, const std::vector<double>& plateZ) const = 0;
+    /// The placed static state needs solving (an off-centre car body, FullCarModel): set
+    /// before addTrucks.
+    void setStaticStateNeedsSolving() { staticSolve_ = true; }
+    /// Moves the positions of `s` (velocities zero, z states kept) until every generalized
+    /// acceleration vanishes: Newton's method with a central-difference Jacobian in the
+    /// generalized speeds' directions (q += N·δu), solved in the least-squares sense so a
+    /// direction without static stiffness takes no step. std::runtime_error when it does
+    /// not converge.
+    void solveStaticEquilibrium(SimTK::State& s) const;
     /// Rail input at a wheelset, averaging over the listed axle offsets.
     RailInputFunction makeRailInput(std::vector<double> trackOffsets) const;
     void declareChannels();
@@ -102,6 +121,9 @@ protected:
     std::vector<std::unique_ptr<Truck>> trucks_;
     ChannelTable<CarSample> channels_;
     double staticCarBodyHeight_ = 0;  // z of the CG at rest [m]
+    using StaticWheelLoads = std::vector<std::array<double, 2>>;  // [wheelset][side] [N]
+    std::vector<StaticWheelLoads> staticWheelLoads_;  // each truck's, in the static state
+    bool staticSolve_ = false;
     class EnergyMeter;
     const EnergyMeter* energyMeter_ = nullptr;  // owned by the force subsystem
 };

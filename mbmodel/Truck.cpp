@@ -230,13 +230,14 @@ void Truck::declareChannels(ChannelTable<CarSample>& c, int index) const {
     }
 }
 
-void Truck::declareFreightChannels(ChannelTable<CarSample>& c, int index) const {
+void Truck::declareFreightChannels(ChannelTable<CarSample>& c, int index,
+                                   const std::vector<std::array<double, 2>>& staticLoads) const {
     const std::string& T = spec_.label;
     auto truck = [index](const CarSample& s) -> const TruckSample& { return s.trucks[index]; };
     for (size_t i = 0; i < wheelsets_.size(); ++i) {
         ChannelLayout::Wheelset* layout = c.findWheelset(makeWheelLiftName(T, i, kLeft));
         for (int side : {kLeft, kRight}) {
-            const double staticLoad = calcStaticWheelLoad(int(i));
+            const double staticLoad = staticLoads.empty() ? calcStaticWheelLoad(int(i)) : staticLoads[i][size_t(side)];
             c.add(fmt::format("wheel_unloading_{}{}_{}", T, i + 1, kSideName[side]), "ratio",
                   ChannelRole::WheelUnloading, [=](const CarSample& s) {
                       return calcWheelUnloading(truck(s).wheels[i].vertical[side], staticLoad);

@@ -84,8 +84,11 @@ public:
 
     /// Declares this truck's channels; `index` is the truck's place in CarSample::trucks.
     void declareChannels(ChannelTable<CarSample>& table, int index) const;
-    /// Declares its freight channels: each wheel's unloading ratio and L/V.
-    void declareFreightChannels(ChannelTable<CarSample>& table, int index) const;
+    /// Declares its freight channels: each wheel's unloading ratio and L/V. The unloading is
+    /// measured from `staticLoads` [wheelset][side] when given (an off-centre car body's
+    /// solved static state), else from calcStaticWheelLoad.
+    void declareFreightChannels(ChannelTable<CarSample>& table, int index,
+                                const std::vector<std::array<double, 2>>& staticLoads = {}) const;
     /// This truck's forces (state realized to Velocity); carBodyAcceleration is left 0.
     TruckSample calcSample(const SimTK::State& s) const;
     const std::string& getLabel() const { return spec_.label; }

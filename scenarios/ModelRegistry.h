@@ -64,10 +64,12 @@ std::vector<std::string> getCommonSettings();
 /// std::logic_error for a key that is none).
 std::vector<std::string> getCarSettings(const std::vector<std::string_view>& unused);
 /// The car parameters of the full car's three-dimensional truck and body alone: pitch and
-/// yaw, the truck spacing, and the center plate's yaw friction and rim (mbmodel/Truck.cpp).
+/// yaw, the truck spacing, the center plate's yaw friction and rim (mbmodel/Truck.cpp), the
+/// twisting body's stiffness and damping, and the off-centre CG (mbmodel/FullCarModel.h).
 inline const std::vector<std::string_view> kFullCarOnlyParameters{
     "pitch_inertia", "yaw_inertia", "truck_spacing", "center_plate_friction", "center_plate_yaw_bristle_angle",
-    "center_plate_rim_points", "car_body_torsional_stiffness", "car_body_torsional_damping_ratio"};
+    "center_plate_rim_points", "car_body_torsional_stiffness", "car_body_torsional_damping_ratio",
+    "cg_longitudinal_offset", "cg_lateral_offset"};
 
 class ModelRegistry {
 public:

@@ -28,7 +28,8 @@ double getUnitFactor(units::Dimension dim, std::string_view unit) {
 }
 
 /// The accepted ranges [SI]: the schema's numbers (scenarios/ScenarioSchema.h), then the
-/// car parameters: finite, and positive unless zero means something (no clearance, no damping).
+/// car parameters: finite, and positive unless zero means something (no clearance, no damping)
+/// or the parameter is a signed offset.
 std::vector<ValueRange> makeValueRanges() {
     constexpr double inf = std::numeric_limits<double>::infinity();
     std::vector<ValueRange> r;
@@ -36,8 +37,8 @@ std::vector<ValueRange> makeValueRanges() {
         if (f.kind == FieldKind::Quantity || f.kind == FieldKind::Integer)
             r.push_back({f.key, f.dimension, f.low, f.high, f.lowOpen, f.highOpen, f.unit, f.kind == FieldKind::Integer});
     for (const CarParameterInfo& info : getCarParameterTable())
-        r.push_back({std::string("car.") + info.key, info.dimension, 0, inf, !info.mayBeZero, true, info.displayUnit,
-                     info.integer});
+        r.push_back({std::string("car.") + info.key, info.dimension, info.isSigned ? -inf : 0, inf,
+                     !info.mayBeZero || info.isSigned, true, info.displayUnit, info.integer});
     return r;
 }
 
@@ -70,6 +71,7 @@ std::string ValueRange::describe() const {
                              : dimension == units::Dimension::Dimensionless
                                  ? "a number"
                                  : fmt::format("{} {}", std::string_view("aeiou").find(name[0]) == std::string_view::npos ? "a" : "an", name);
+    if (std::isinf(low) && std::isinf(high)) return fmt::format("{} (finite)", what);
     if (std::isinf(high)) return fmt::format("{} {} {} (finite)", what, lowOpen ? ">" : "≥", format(low));
     return fmt::format("{} in {}{}, {}{}", what, lowOpen ? "(" : "[", format(low), format(high), highOpen ? ")" : "]");
 }
@@ -102,6 +104,39 @@ CriteriaLimits resolveCriteriaLimits(const Scenario& sc) {
     return l;
 }
 
+namespace {
+/// The car's cross-checks, for a model with two trucks (one that uses the truck spacing): its
+/// trucks within its length, its CG between the truck centres and inside the rails
+/// (docs/model.md, "Off-centre lading").
+void checkCarGeometry(const Scenario& sc) {
+    const ModelDescriptor* model = ModelRegistry::get().find(sc.model);
+    if (model && !model->usesSetting("car.truck_spacing")) return;
+    const CarParameters& c = sc.car;
+    const double in = units::inch, ft = units::foot;
+    const double m = c.getCarBodyWeight() / units::g;
+    if (!(m > 0))
+        throw ScenarioError(fmt::format("{}: key 'car.body_and_bolsters_weight' = {:.6g} lb: expected more than the two "
+                                        "bolsters' weight, 2 x car.bolster_weight = {:.6g} lb",
+                                        sc.source, c.bodyAndBolstersWeight / units::lbf, 2 * c.bolsterWeight / units::lbf));
+    // The car's length: the uniform beam of the body's pitch inertia (docs/model.md, "Car-body torsion").
+    const double length = std::sqrt(12 * c.pitchInertia / m);
+    if (c.truckSpacing + c.wheelbase > length)
+        throw ScenarioError(fmt::format(
+            "{}: key 'car.truck_spacing' = {:.6g} ft: expected the outer wheelsets within the car body's length, "
+            "truck_spacing + wheelbase ({:.6g} in) <= {:.4g} ft (the uniform beam of its pitch inertia, "
+            "sqrt(12 x pitch_inertia / mass))",
+            sc.source, c.truckSpacing / ft, c.wheelbase / in, length / ft));
+    if (!(std::abs(c.cgLongitudinalOffset) < c.truckSpacing / 2))
+        throw ScenarioError(fmt::format("{}: key 'car.cg_longitudinal_offset' = {:.6g} in: expected the car body's CG "
+                                        "between the truck centres, |offset| < truck_spacing / 2 = {:.6g} in",
+                                        sc.source, c.cgLongitudinalOffset / in, c.truckSpacing / 2 / in));
+    if (!(std::abs(c.cgLateralOffset) < c.gauge / 2))
+        throw ScenarioError(fmt::format("{}: key 'car.cg_lateral_offset' = {:.6g} in: expected the car body's CG inside "
+                                        "the rails, |offset| < gauge / 2 = {:.6g} in",
+                                        sc.source, c.cgLateralOffset / in, c.gauge / 2 / in));
+}
+}  // namespace
+
 void checkScenario(const Scenario& sc) {
     auto check = [&sc](const std::string& key, double value) {
         const ValueRange& range = getValueRange(key);
@@ -117,6 +152,7 @@ void checkScenario(const Scenario& sc) {
         if (f.zeroIsDerived && v == 0) continue;
         check(f.key, v);
     }
+    checkCarGeometry(sc);
     if (!(sc.filterCutoffHz < sc.run.outputRate / 2))
         throw ScenarioError(fmt::format("{}: key 'run.filter_cutoff' = {} Hz: expected a cut-off below the Nyquist "
                                         "frequency, half the output rate ({} Hz)",
@@ -575,6 +611,7 @@ Scenario parseScenario(std::string_view text, const std::string& source, const s
     top.rejectUnknown({"car", "track", "run", "integrator", "eom", "limits", "reduced", "attribution", "wheel_rail", "car_body",
                        "criteria"});
     sc.settingsSet = listKeys(root);
+    checkCarGeometry(sc);
     return sc;
 }
 

@@ -181,11 +181,12 @@ TEST(ModelRegistry, ACarParameterAModelDoesNotUseLeavesItsRunUnchanged) {
             SCOPED_TRACE(m.name + " " + info.key);
             Scenario sc = base;
             double& v = sc.car.*(info.member);
-            v = info.integer ? v + 4 : v * 1.3;
+            // An offset's default is 0: moved by 2 in.
+            v = info.integer ? v + 4 : info.isSigned ? v + 2 * units::inch : v * 1.3;
             EXPECT_EQ(runScenario(sc).result.history.samples, reference);
             ++checked;
         }
-        EXPECT_EQ(checked, m.name == "fullcar" ? 0 : m.name == "reduced" ? 17 : 8) << m.name;
+        EXPECT_EQ(checked, m.name == "fullcar" ? 0 : m.name == "reduced" ? 19 : 10) << m.name;
     }
 }
 

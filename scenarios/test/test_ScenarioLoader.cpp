@@ -132,6 +132,17 @@ TEST(ScenarioLoader, CheckScenarioRefusesValuesChangedAfterLoading) {
     EXPECT_NE(errorAfter([](Scenario& sc) { sc.car.springVerticalRate = std::nan(""); }).find("car.spring_vertical_rate"),
               std::string::npos);
     EXPECT_NE(errorAfter([](Scenario& sc) { sc.run.duration = 0.001; }).find("[0.05 s, 3600 s]"), std::string::npos);
+    // The car's geometry: trucks within its length, the CG between the trucks and inside the rails.
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.car.truckSpacing = 60 * units::foot; })
+                  .find("case.toml: key 'car.truck_spacing' = 60 ft: expected the outer wheelsets within the car body's length"),
+              std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.car.cgLongitudinalOffset = -20 * units::foot; })
+                  .find("key 'car.cg_longitudinal_offset' = -240 in: expected the car body's CG between the truck centres"),
+              std::string::npos);
+    EXPECT_NE(errorAfter([](Scenario& sc) { sc.car.cgLateralOffset = 30 * units::inch; })
+                  .find("key 'car.cg_lateral_offset' = 30 in: expected the car body's CG inside the rails, |offset| < gauge / 2 = 28.25 in"),
+              std::string::npos);
+    EXPECT_EQ(errorAfter([](Scenario& sc) { sc.car.cgLateralOffset = -2 * units::inch; }), "");
     EXPECT_NE(errorAfter([](Scenario& sc) {
                   sc.run.duration = 0.2, sc.run.outputRate = 10, sc.filterCutoffHz = 2;
               }).find("expected at least 4 output intervals, a duration ≥ 0.4 s"),
