@@ -252,6 +252,16 @@ SteadyResult calcSteady(const Scenario& sc, const SteadyOptions& o) {
                                         "describing function solves the report's formulation, with its lateral "
                                         "restraint)",
                                         sc.source, getLateralWheelRailName(sc.wheelRail.lateral)));
+    if (sc.carBody.torsion)
+        throw ScenarioError(fmt::format("{}: key 'car_body.torsion' = true: expected false for steady (the describing "
+                                        "function solves the report's half car, whose body is rigid)",
+                                        sc.source));
+    if (sc.car.cgLongitudinalOffset != 0 || sc.car.cgLateralOffset != 0)
+        throw ScenarioError(fmt::format("{}: key 'car.{}' = {:g} in: expected 0 for steady (the describing function "
+                                        "solves the report's half car, loaded centrally)",
+                                        sc.source, sc.car.cgLateralOffset != 0 ? "cg_lateral_offset" : "cg_longitudinal_offset",
+                                        (sc.car.cgLateralOffset != 0 ? sc.car.cgLateralOffset : sc.car.cgLongitudinalOffset) /
+                                            units::inch));
     SteadyResult r;
     const double C = DescribingFunctionModel::calcFundamentalCrossLevel(sc.track.amplitude, sc.car.wheelbase,
                                                                         sc.track.railLength);

@@ -136,8 +136,11 @@ void printSummary(const RunSummary& s, const Scenario& sc) {
                s.steady.windowS, s.steady.cycles, s.steady.rollDeg, s.steady.wheelLiftIn, s.steady.truckSideWheelLoadLb,
                s.steady.sideBearingLoadLb, s.steady.centerPlateLoadLb);
     if (std::isfinite(s.energyBalanceError))
-        fmt::print("  energy balance error {:.2f} % at the end, {:.2f} % worst over the run\n", 100 * s.energyBalanceError,
-                   100 * s.worstEnergyBalanceError);
+        fmt::print("  energy balance error {:.2f} % at the end, {}\n", 100 * s.energyBalanceError,
+                   std::isfinite(s.worstEnergyBalanceError)
+                       ? fmt::format("{:.2f} % worst over the run", 100 * s.worstEnergyBalanceError)
+                       : std::string("no worst over the run (the run ends before the audit's window, 0.5 s after the "
+                                     "level lead-in, starts)"));
     fmt::print("{}", formatCriteriaTable(s));
     if (s.criteriaFromS > 0) fmt::print("  criteria judged from t = {:.2f} s (after the speed ramp or level lead-in)\n", s.criteriaFromS);
     fmt::print("  force maxima filtered: {}\n", s.filter);

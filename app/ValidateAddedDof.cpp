@@ -1,9 +1,15 @@
 // validate, section 8: what the degrees of freedom the 1976 models leave out change. The
 // full car against the half car (pitch, yaw, single-wheel loads); the full car's twisting
 // car body (FullCarModel.h, TwistingCarBody) from rigid down to flexible; the ratio of truck
-// centres to rail length; and the federal "harmonics" track (scenarios/federal-harmonics.toml).
+// centres to rail length; the off-centre car body (its static loads against the closed form of
+// mbmodel/OffCentreStatics.h, and from rest); and the federal "harmonics" track
+// (scenarios/federal-harmonics.toml).
 #include "app/ValidateSections.h"
+#include "mbmodel/CarSide.h"
 #include "mbmodel/LowPassFilter.h"
+#include "mbmodel/OffCentreStatics.h"
+#include "mbmodel/RockingModel.h"
+#include "scenarios/ModelRegistry.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -14,11 +20,12 @@ using namespace validate_detail;
 
 namespace {
 
-/// One configuration of the full car: truck centres over rail length, and the car body's
-/// torsional stiffness (0: rigid).
+/// One configuration of the full car: truck centres over rail length, the car body's
+/// torsional stiffness (0: rigid) and its CG's offsets.
 struct DofConfig {
     double ratio = 1;
     double stiffnessLbInPerRad = 0;
+    double exIn = 0, eyIn = 0;  ///< cg_longitudinal_offset, cg_lateral_offset [in]
     std::string describeStiffness() const {
         return stiffnessLbInPerRad == 0 ? std::string("rigid") : fmt::format("{:.0e}", stiffnessLbInPerRad);
     }
@@ -31,7 +38,15 @@ Scenario makeDofScenario(const DofConfig& c) {
     sc.car.truckSpacing = c.ratio * sc.track.railLength;
     sc.carBody.torsion = c.stiffnessLbInPerRad > 0;
     if (sc.carBody.torsion) sc.car.carBodyTorsionalStiffness = c.stiffnessLbInPerRad * units::lbf * units::inch;
+    sc.car.cgLongitudinalOffset = c.exIn * units::inch;
+    sc.car.cgLateralOffset = c.eyIn * units::inch;
     return sc;
+}
+
+/// `x` to `digits` decimals, a value that rounds to zero printed without its sign.
+std::string noNegativeZero(double x, int digits) {
+    const std::string t = fmt::format("{:.{}f}", x, digits);
+    return t.find_first_not_of("-0.") == std::string::npos ? t.substr(t[0] == '-' ? 1 : 0) : t;
 }
 
 std::string fmtAngle(double deg) { return std::isfinite(deg) ? fmt::format("{:.3f}", deg) : std::string("—"); }
@@ -104,22 +119,25 @@ std::string makeFromRestPart(const Settings& s, const std::vector<DofConfig>& co
     std::string md = fmt::format(
         "### The twisting car body and the truck centres, from rest\n\nThe 70-ton loaded car, 0.75 in, 16.5 mph, full "
         "car from rest, {:g} s: `rockroll run scenarios/70ton-loaded.toml --set car.truck_spacing=\"R·39 ft\" "
-        "--set car_body.torsion=true --set car.car_body_torsional_stiffness=\"K lb*in/rad\"` (rigid: "
+        "--set car_body.torsion=true --set car.car_body_torsional_stiffness=\"K lb*in/rad\" --set "
+        "car.cg_longitudinal_offset=\"e_x in\" --set car.cg_lateral_offset=\"e_y in\"` (rigid: "
         "`car_body.torsion` left false). R: truck centres over the 39 ft rail; K: the car body's torsional stiffness "
-        "(docs/model.md, \"Car-body torsion\"; the car files assume 1e9). Angles are the largest |value| over the run; "
+        "(docs/model.md, \"Car-body torsion\"; the car files assume 1e9); e_x, e_y: the body's CG ahead and to the "
+        "left (docs/model.md, \"Off-centre lading\"; every wheel's unloading from its own static load). Angles are the largest |value| over the run; "
         "twist is the rear half's roll against the front half's. Each wheel's unloading (columns truck, "
         "wheelset, side: F1_L is the front truck's leading wheelset's left wheel) is its largest (static − load) / "
-        "static, 20 Hz filtered (1: the wheel unloads fully).\n\n| R | K, lb·in/rad | regime | roll, deg | "
-        "pitch, deg | yaw, deg | twist, deg | min wheel load / static |",
+        "static, 20 Hz filtered (1: the wheel unloads fully).\n\n| R | K, lb·in/rad | e_x, in | e_y, in | regime | "
+        "roll, deg | pitch, deg | yaw, deg | twist, deg | min wheel load / static |",
         s.runDuration);
     // wheel_unloading_F1_L_ratio → F1_L
     for (const auto& w : wheels) md += fmt::format(" {} |", w.substr(16, w.rfind("_ratio") - 16));
-    md += "\n|---|---|---|---|---|---|---|---|";
+    md += "\n|---|---|---|---|---|---|---|---|---|---|";
     for (size_t k = 0; k < wheels.size(); ++k) md += "---|";
     md += "\n";
     for (size_t i = 0; i < configs.size(); ++i) {
         const RunSummary& x = out[i].summary;
-        md += fmt::format("| {:.2f} | {} |", configs[i].ratio, configs[i].describeStiffness());
+        md += fmt::format("| {:.2f} | {} | {:g} | {:g} |", configs[i].ratio, configs[i].describeStiffness(),
+                          configs[i].exIn, configs[i].eyIn);
         if (!out[i].error.empty()) {
             md += fmt::format(" failed: {} |\n", out[i].error);
             continue;
@@ -131,6 +149,8 @@ std::string makeFromRestPart(const Settings& s, const std::vector<DofConfig>& co
         meta["added_dof"]["from_rest"].push_back(
             {{"truck_centre_ratio", configs[i].ratio},
              {"torsional_stiffness_lb_in_per_rad", configs[i].stiffnessLbInPerRad},
+             {"cg_longitudinal_offset_in", configs[i].exIn},
+             {"cg_lateral_offset_in", configs[i].eyIn},
              {"max_roll_deg", x.maxRollDeg},
              {"max_car_body_twist_deg", std::isfinite(x.maxCarBodyTwistDeg) ? nlohmann::json(x.maxCarBodyTwistDeg) : nullptr},
              {"min_wheel_load_ratio", x.minWheelLoadRatio}});
@@ -198,9 +218,94 @@ std::string makeSweepPart(const Settings& s, const std::vector<DofConfig>& confi
     return md + "\n";
 }
 
-/// Part 4: the federal harmonics track, each car at the speed where section 2's sweeps peak.
-std::string makeHarmonicsPart(const Settings& s, const std::vector<SweepResult>& sweeps) {
-    const Scenario track = loadScenarioFile(findDataFile("scenarios/federal-harmonics.toml").string());
+/// Part 4: the off-centre car body's static loads: the lever rule, the closed form
+/// (mbmodel/OffCentreStatics.h) and the full car's solved static state.
+std::string makeOffCentreStaticPart(const Settings& s, nlohmann::ordered_json& meta) {
+    struct Case {
+        std::string car;
+        double ex, ey;  // [in]
+    };
+    std::vector<Case> cases;
+    for (const char* car : {"70ton-loaded", "70ton-empty", "100ton-loaded"})
+        for (auto [ex, ey] : s.quick ? std::vector<std::pair<double, double>>{{2, 0}, {0, 2}}
+                                     : std::vector<std::pair<double, double>>{{2, 0}, {12, 0}, {24, 0}, {0, 1}, {0, 2}, {0, 4}, {12, 2}})
+            cases.push_back({car, ex, ey});
+    const std::map<std::string, Scenario> cars = loadCarScenarios({"70ton-loaded", "70ton-empty", "100ton-loaded"});
+    std::string md =
+        "### Off-centre lading: static loads\n\nEach car's full car with its body's CG moved e_x ahead and e_y to "
+        "the left (`--set car.cg_longitudinal_offset=\"e_x in\" --set car.cg_lateral_offset=\"e_y in\"`), its "
+        "static state solved (docs/model.md, \"Off-centre lading\"), beside the closed form of "
+        "mbmodel/OffCentreStatics.h and the rigid car's lever rule: the front truck's plate W·(½ + e_x/s), and each "
+        "wheel of a wheelset (Q + W_B)/4 + W_u/2 ± Q·e_y/(2g). Wheel: the front truck's leading wheelset's left "
+        "wheel. Transfer: the load the offset moves onto the front plate, or between the two wheels, over the "
+        "lever rule's (1: the lever rule). Closed form valid: every rim point seated and the side bearings "
+        "open.\n\n| car | e_x, in | e_y, in | front plate: lever rule, lb | closed form, lb | model, lb | wheel: "
+        "lever rule, lb | closed form, lb | model, lb | plate transfer / lever | wheel transfer / lever | body "
+        "roll, deg | pitch, deg | closed form valid |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const double lb = units::lbf;
+    for (const Case& c : cases) {
+        Scenario sc = cars.at(c.car);
+        sc.model = model_names::kFullCar;
+        sc.car.cgLongitudinalOffset = c.ex * units::inch;
+        sc.car.cgLateralOffset = c.ey * units::inch;
+        const CarParameters& car = sc.car;
+        const OffCentreStatics cf = calcOffCentreStatics(car);
+        const double W = car.getCarBodyWeight(), Q = W * (0.5 + car.cgLongitudinalOffset / car.truckSpacing);
+        const double centred = (Q + car.bolsterWeight) / 4 + (car.wheelsetWeight + car.sideFrameWeight) / 2;
+        const double leverWheel = centred + Q * car.cgLateralOffset / (2 * car.gauge);
+        double plate = NAN, wheel = NAN, rightWheel = NAN, roll = NAN, pitch = NAN;
+        std::string error;
+        try {
+            const auto model = ModelRegistry::get().getModel(sc.model).makeMultibody(
+                car, TrackInput(sc.track), ModelOptions{sc.speed, TrackEntry::Lead, TrackMotion{}, AttributionSwitches{},
+                                                        sc.wheelRail, sc.carBody});
+            const SimTK::State st = model->makeStaticState(false);
+            const CarSample sample = model->calcSample(st);
+            plate = sample.trucks[0].centerPlate;
+            wheel = model->getStaticWheelLoad(0, 0, kLeft);
+            rightWheel = model->getStaticWheelLoad(0, 0, kRight);
+            roll = sample.angles[0] / units::degree;
+            pitch = sample.angles[1] / units::degree;
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+        if (!error.empty()) {
+            md += fmt::format("| {} | {:g} | {:g} | failed: {} | | | | | | | | | | |\n", c.car, c.ex, c.ey, error);
+            continue;
+        }
+        auto ratio = [](double moved, double lever) {
+            return lever == 0 ? std::string("—") : fmt::format("{:.3f}", moved / lever);
+        };
+        const double leverSide = Q * car.cgLateralOffset / car.gauge;  // between the wheelset's two wheels
+        md += fmt::format("| {} | {:g} | {:g} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {} | {} | {} | {} | "
+                          "{} |\n",
+                          c.car, c.ex, c.ey, Q / lb, cf.trucks[0].centerPlate / lb, plate / lb, leverWheel / lb,
+                          cf.trucks[0].wheel[kLeft] / lb, wheel / lb, ratio(plate - W / 2, Q - W / 2),
+                          ratio(wheel - rightWheel, leverSide), noNegativeZero(roll, 4), noNegativeZero(pitch, 4),
+                          cf.getIsValid() ? "yes" : "no");
+        meta["added_dof"]["off_centre_static"].push_back({{"car", c.car},
+                                                          {"cg_longitudinal_offset_in", c.ex},
+                                                          {"cg_lateral_offset_in", c.ey},
+                                                          {"front_plate_lever_lb", Q / lb},
+                                                          {"front_plate_closed_form_lb", cf.trucks[0].centerPlate / lb},
+                                                          {"front_plate_model_lb", plate / lb},
+                                                          {"wheel_lever_lb", leverWheel / lb},
+                                                          {"wheel_closed_form_lb", cf.trucks[0].wheel[kLeft] / lb},
+                                                          {"wheel_model_lb", wheel / lb}});
+    }
+    return md + "\n";
+}
+
+/// A measured track that excites the full car's added motions, run by each car.
+struct TrackCase {
+    std::string file;     ///< scenario file, relative to the data directory
+    std::string heading;  ///< the part's heading and text before its table
+};
+
+/// Parts 5 and 6: a measured track (the federal harmonics track; rails with their own joint
+/// geometry), each car at the speed where section 2's sweeps peak.
+std::string makeTrackPart(const Settings& s, const std::vector<SweepResult>& sweeps, const TrackCase& tc) {
+    const Scenario track = loadScenarioFile(findDataFile(tc.file).string());
     struct Case {
         std::string car;
         double mph = 0;
@@ -242,13 +347,11 @@ std::string makeHarmonicsPart(const Settings& s, const std::vector<SweepResult>&
             }
         });
     runJobs(jobs, s.jobs);
-    std::string md =
-        "### The federal harmonics track\n\n`rockroll run scenarios/federal-harmonics.toml --set car.base=<car> "
-        "--speed-mph V` (the 1.25 in limit of 49 CFR 213.63 on jointed track with staggered joints: seven low joints, "
-        "then level track; docs/cli.md, \"Measured track\"), full car from rest, rigid and twisting car body (the "
-        "car file's K), each car at the speed of the largest steady roll amplitude of section 2's 0.75 in up sweep "
-        "(the branch from rest; the half car's, else the model swept). Whole-run values.\n\n| car | speed, mph | from | car body | regime | "
-        "max roll, deg | max pitch, deg | max yaw, deg | max twist, deg | min wheel load / static | max single-wheel "
+    std::string md = tc.heading + fmt::format(
+        " Full car from rest, rigid and twisting car body (the car file's K), each car at the speed of the largest "
+        "steady roll amplitude of section 2's 0.75 in up sweep (the branch from rest; the half car's, else the model "
+        "swept): `rockroll run {} --set car.base=<car> --speed-mph V`. Whole-run values.\n\n", tc.file) +
+        "| car | speed, mph | from | car body | regime | max roll, deg | max pitch, deg | max yaw, deg | max twist, deg | min wheel load / static | max single-wheel "
         "load, lb | max wheel lift, in |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (size_t i = 0; i < runs.size(); ++i) {
         const Case& c = runs[i].first;
@@ -280,9 +383,25 @@ std::string makeAddedDofSection(const Settings& s, const std::vector<SweepResult
     for (double r : {1.0, 0.5})
         for (double k : stiffnesses)
             if (k > 0) configs.push_back({r, k});
-    md += makeFromRestPart(s, configs, meta);
+    // Off-centre lading, rigid body at the report's ratio: from rest only.
+    std::vector<DofConfig> offCentre;
+    for (auto [ex, ey] : s.quick ? std::vector<std::pair<double, double>>{{0, 2}}
+                                 : std::vector<std::pair<double, double>>{{0, 1}, {0, 2}, {0, -2}, {24, 0}, {24, 2}})
+        offCentre.push_back({1.0, 0, ex, ey});
+    std::vector<DofConfig> fromRest = configs;
+    fromRest.insert(fromRest.end(), offCentre.begin(), offCentre.end());
+    md += makeFromRestPart(s, fromRest, meta);
     md += makeSweepPart(s, configs, meta);
-    md += makeHarmonicsPart(s, sweeps);
+    md += makeOffCentreStaticPart(s, meta);
+    md += makeTrackPart(s, sweeps, {"scenarios/federal-harmonics.toml",
+                                    "### The federal harmonics track\n\nThe 1.25 in limit of 49 CFR 213.63 on jointed "
+                                    "track with staggered joints: seven low joints, then level track (docs/cli.md, "
+                                    "\"Measured track\")."});
+    md += makeTrackPart(s, sweeps, {"scenarios/uneven-joints.toml",
+                                    "### Rails with their own joint geometry\n\nJoints 0.75 in deep on the left rail "
+                                    "and 0.5 in on the right, each scattered by up to ±25 % by a seeded rule, the "
+                                    "right rail's joints 0.35 of a rail after the left's (scripts/make-uneven-joints-"
+                                    "track.py; docs/cli.md, \"Measured track\")."});
     return md;
 }
 

@@ -67,3 +67,16 @@ TEST(SteadyCommand, RefusesTheCreepAndFlangeContactItDoesNotSolve) {
     EXPECT_NE(err.find("wheel_rail.lateral"), std::string::npos) << err;
     EXPECT_NE(err.find("expected \"restraint\" for steady"), std::string::npos) << err;
 }
+
+// The describing function's car is the report's rigid, centrally loaded half car: a twisting
+// body or an off-centre load is refused, not echoed and ignored.
+TEST(SteadyCommand, RefusesTheFullCarsBodyItDoesNotSolve) {
+    for (const std::string& set : {std::string("car_body.torsion=true"), std::string("car.cg_lateral_offset='2 in'"),
+                                   std::string("car.cg_longitudinal_offset='-3 in'")}) {
+        int code = -1;
+        const std::string err = capture(kSteady + " --set " + set + " 2>&1 >/dev/null", code);
+        EXPECT_EQ(code, 2) << set << ": " << err;
+        EXPECT_NE(err.find(set.substr(0, set.find('='))), std::string::npos) << err;
+        EXPECT_NE(err.find("for steady"), std::string::npos) << err;
+    }
+}

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -208,4 +210,67 @@ TEST(MeasuredTrack, TheWorstEnergyErrorIsTakenAfterTheLevelLeadIn) {
     EXPECT_NEAR(s.criteriaFromS, 39 * units::foot / sc.speed, 0.01);
     EXPECT_LT(s.worstEnergyBalanceError, 0.05) << s.worstEnergyBalanceError;
     EXPECT_LE(s.energyBalanceError, s.worstEnergyBalanceError);
+}
+
+// The uneven-joints table (scenarios/tracks/uneven-joints.csv) follows the rule its generator
+// (scripts/make-uneven-joints-track.py) states: twelve joints on each rail, one rail apart, the
+// right rail's 0.35 of a rail after the left's; each joint's depth within ±25 % of its rail's
+// (0.75 in left, 0.5 in right); around each joint the rail is the rectified sine of that depth;
+// level before the first dip and after the last.
+TEST(MeasuredTrack, UnevenJointsTableObeysItsRule) {
+    const Scenario sc = loadScenarioFile(kScenarios + "/uneven-joints.toml");
+    const TrackInput track(sc.track);
+    const auto& rows = sc.track.measured;
+    const double L = 39 * units::foot, in = units::inch;
+    std::array<std::vector<std::pair<double, double>>, 2> joints;  // per rail: (s, depth)
+    for (int rail : {0, 1})
+        for (size_t i = 1; i + 1 < rows.size(); ++i) {
+            const double z = track.calcRails(rows[i].distance).z[size_t(rail)];
+            if (z < -1e-9 && z < track.calcRails(rows[i - 1].distance).z[size_t(rail)] &&
+                z < track.calcRails(rows[i + 1].distance).z[size_t(rail)])
+                joints[size_t(rail)].push_back({rows[i].distance, -z});
+        }
+    ASSERT_EQ(joints[0].size(), 12u);
+    ASSERT_EQ(joints[1].size(), 12u);
+    const std::array<double, 2> depth{0.75 * in, 0.5 * in};
+    bool depthsDiffer = false;
+    for (int rail : {0, 1})
+        for (size_t k = 0; k < 12; ++k) {
+            const auto [sj, dj] = joints[size_t(rail)][k];
+            EXPECT_NEAR(sj, joints[0][k].first + (rail == 1 ? 0.35 * L : 0.0), 1e-6) << rail << " " << k;
+            if (k > 0) {
+                EXPECT_NEAR(sj - joints[size_t(rail)][k - 1].first, L, 1e-6);
+            }
+            EXPECT_GE(dj, 0.75 * depth[size_t(rail)] - 1e-6 * in);
+            EXPECT_LE(dj, 1.25 * depth[size_t(rail)] + 1e-6 * in);
+            if (k > 0 && std::abs(dj - joints[size_t(rail)][k - 1].second) > 0.01 * in) depthsDiffer = true;
+            // The rectified sine of this joint's depth over the rows within half a rail of it.
+            for (const auto& row : rows) {
+                if (std::abs(row.distance - sj) > L / 2 - 1e-6) continue;
+                ASSERT_NEAR(track.calcRails(row.distance).z[size_t(rail)],
+                            -dj * (1 - std::abs(std::sin(M_PI * (row.distance - sj) / L))), 2e-6 * in)
+                    << rail << " " << k << " at " << row.distance;
+            }
+        }
+    EXPECT_TRUE(depthsDiffer) << "the scatter gives each joint its own depth";
+    EXPECT_NEAR(track.calcLeadInDistance(), L, 1e-6);
+    EXPECT_EQ(track.calcRails(rows.back().distance).z[0], 0.0);
+    EXPECT_EQ(track.calcRails(rows.back().distance).z[1], 0.0);
+}
+
+// The shipped table is what its script writes with its default options (the seed included).
+TEST(MeasuredTrack, UnevenJointsTableIsItsScriptsOutput) {
+    const std::filesystem::path out = rockroll::test::makeTestTempDir() / "uneven-joints.csv";
+    const std::string cmd = "/usr/bin/python3 '" + std::string(ROCKROLL_SOURCE_DIR) +
+                            "/scripts/make-uneven-joints-track.py' --out '" + out.string() + "' > /dev/null";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    auto read = [](const std::filesystem::path& p) {
+        std::ifstream f(p, std::ios::binary);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        return ss.str();
+    };
+    const std::string written = read(out), shipped = read(kScenarios + "/tracks/uneven-joints.csv");
+    EXPECT_FALSE(shipped.empty());
+    EXPECT_EQ(written, shipped);
 }
