@@ -51,7 +51,9 @@ OffCentreStatics calcOffCentreStatics(const CarParameters& car) {
         const double base = (Q[size_t(t)] + WB) / 4 + Wu / 2;
         ts.wheel = {base + x(i + 3) / 2, base - x(i + 3) / 2};
         const double seated = Q[size_t(t)] / kcp, tilt = std::abs(x(0) - x(i));
-        if (a * std::abs(r.pitch) + a * tilt >= seated) r.rimSeated = false;
+        // A rim point at angle ψ sinks a·(θ·cos ψ + (φ_c − φ_b)·sin ψ) more than the centre: at
+        // most a·√(θ² + (φ_c − φ_b)²).
+        if (a * std::hypot(r.pitch, tilt) >= seated) r.rimSeated = false;
         if (car.sideBearingOffset * tilt >= car.sideBearingClearance) r.sideBearingsOpen = false;
     }
     return r;

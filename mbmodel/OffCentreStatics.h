@@ -30,7 +30,7 @@
 //     (N_L − N_R)·g/2         = (P_L − P_R)·b/2 − (Q + W_B)/2·H_s·φ_w   each wheelset
 //
 // and each wheel carries (Q + W_B)/4 + W_u/2 ± (N_L − N_R)/2, W_u a wheelset with its
-// side-frame share. Valid while every rim point stays seated (a·(|θ| + |φ_c − φ_b|) below
+// side-frame share. Valid while every rim point stays seated (a·√(θ² + (φ_c − φ_b)²) below
 // Q/k_cp) and the side bearings stay open (getIsValid). The twisting car body
 // (car_body.torsion) rolls in two halves: this closed form is its stiff limit.
 #include "mbmodel/CarParameters.h"

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fmt/format.h>
 
 using namespace rockroll;
@@ -139,4 +140,34 @@ TEST(OffCentreLading, AnOffCentreCarAtRestStaysAtRest) {
     EXPECT_GT(std::abs(test_cases::getColumn(r, "roll_deg").front()), 0.1);
     for (const char* name : {"wheel_unloading_F1_L_ratio", "wheel_unloading_R2_R_ratio"})
         EXPECT_LT(std::abs(test_cases::getColumn(r, name).back()), 1e-6) << name;
+}
+
+// Moving on: the off-centre car balances its energy, and the load moved to the other side on
+// the mirrored track mirrors the response (roll negated, each wheel's load its mirror wheel's).
+TEST(OffCentreLading, TheOffCentreCarBalancesItsEnergyAndMirrors) {
+    Scenario a = test_cases::makeCase("fullcar", 0.5, 16.5, 6.0);
+    a.car.cgLongitudinalOffset = 12 * in;
+    a.car.cgLateralOffset = 2 * in;
+    a.run.integrator.accuracy = 1e-6;
+    Scenario b = a;
+    b.car.cgLateralOffset = -2 * in;
+    b.track.mirror = true;
+    const ScenarioRun ra = runScenario(a), rb = runScenario(b);
+    EXPECT_LE(ra.summary.energyBalanceError, 0.01);
+    EXPECT_LE(rb.summary.energyBalanceError, 0.01);
+    auto worstMismatch = [&](const std::string& x, const std::string& y, double sign) {
+        const auto xa = test_cases::getColumn(ra.result, x), yb = test_cases::getColumn(rb.result, y);
+        double peak = 0, worst = 0;
+        for (size_t i = 0; i < xa.size(); ++i) {
+            peak = std::max(peak, std::abs(xa[i]));
+            worst = std::max(worst, std::abs(xa[i] - sign * yb[i]));
+        }
+        return worst / peak;
+    };
+    EXPECT_GT(ra.summary.maxRollDeg, 0.5);
+    EXPECT_LT(worstMismatch("roll_deg", "roll_deg", -1), 1e-3);
+    EXPECT_LT(worstMismatch("wheel_F1_L_lb", "wheel_F1_R_lb", 1), 1e-3);
+    EXPECT_LT(worstMismatch("wheel_R2_R_lb", "wheel_R2_L_lb", 1), 1e-3);
+    std::printf("off-centre car, e = (12, ±2) in, 0.5 in, 16.5 mph: max roll %.3f deg, energy error %.2e, mirror %.1e\n",
+                ra.summary.maxRollDeg, ra.summary.energyBalanceError, worstMismatch("roll_deg", "roll_deg", -1));
 }
