@@ -53,9 +53,12 @@ ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeStaticMemory() const {
 }
 
 TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const TruckMemory& mem) const {
+    return makeTruckInputs(rails_(t), y, mem);
+}
+
+TruckInputs ReducedHalfCarModel::makeTruckInputs(const RailState& rail, const State& y, const TruckMemory& mem) const {
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     TruckInputs in;
-    const RailState rail = rails_(t);
     for (int i : {0, 1}) {
         in.rimZ[i] = y[2] - h + y[0] * kSideSign[i] * truck_.a_c;
         in.padZ[i] = y[2] - h + padAbovePlate + y[0] * kSideSign[i] * truck_.a_s;
@@ -72,7 +75,8 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(double t, const State& y, const
 ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem,
                                                               TruckSearchCounts* counts) const {
     Evaluation e;
-    e.truck = findTruckEquilibrium(makeTruckInputs(t, y, mem), mem.mode, *modeCache_, counts);
+    e.rail = rails_(t);
+    e.truck = findTruckEquilibrium(makeTruckInputs(e.rail, y, mem), mem.mode, *modeCache_, counts);
     const double pin = e.truck.pinForce;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
     double Fz = -mass_ * units::g, M = h * pin;
@@ -85,8 +89,7 @@ ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const St
     e.derivative[3] = M / inertia_;
     e.derivative[4] = pin / mass_;
     e.derivative[5] = Fz / mass_;
-    const RailState rail = rails_(t);
-    for (int i : {0, 1}) e.railInputPower += e.truck.wheel[i] * rail.zDot[i];
+    for (int i : {0, 1}) e.railInputPower += e.truck.wheel[i] * e.rail.zDot[i];
     return e;
 }
 
@@ -122,7 +125,7 @@ ReducedHalfCarModel::Sample ReducedHalfCarModel::calcSample(double t, const Stat
                                                             const double* energyIntegrals) const {
     Sample s;
     s.truck = e.truck;
-    const RailState rail = rails_(t);
+    const RailState& rail = e.rail;  // at t
     s.roll = y[0];
     s.verticalFromStatic = y[2] - staticZ_;
     s.lateral = y[1];
@@ -158,6 +161,18 @@ double ReducedHalfCarModel::calcSliderDissipation(const TruckMemory& before, con
     double D = std::abs(after.lateralFriction) * std::abs(after.lateralAnchor - before.lateralAnchor);
     for (int i : {0, 1}) D += std::abs(after.friction[i]) * std::abs(after.wedgeAnchor[i] - before.wedgeAnchor[i]);
     return D;
+}
+
+ReducedHalfCarModel::TruckMemory ReducedHalfCarModel::makeMemoryAfter(const TruckSolution& accepted) {
+    TruckMemory m;
+    m.mode = accepted.mode;
+    m.compression = accepted.compression;
+    m.wedgeAnchor = accepted.wedgeAnchor;
+    m.lateralDeflection = accepted.lateral;
+    m.lateralAnchor = accepted.lateralAnchor;
+    m.rollBolster = accepted.rollBolster;
+    m.rollWheelset = accepted.rollWheelset;
+    return m;
 }
 
 void ReducedHalfCarModel::calcChannels(double t, const State& y, const Evaluation& e, std::vector<double>& out,
@@ -224,16 +239,20 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     ReducedRunStatistics st;
     RunGuard guard(model.getChannels(), limits);
     double energy[2] = {0, 0};  // energy audit: rail work (RK4-weighted stage powers), slider dissipation
+    // The accepted evaluation, at (tAccepted, y) with the memory before it. When its
+    // mode is consistent, the next step's first stage at the same time and state (with
+    // the memory it set) solves that mode first with the same right-hand side (a stick
+    // row's anchor did not move; a slip row holds ±F_V) and finds it consistent (a
+    // slipping wedge's Z − Z_old is now 0): the same evaluation, bit for bit (test
+    // ReducedModel.ReusedFirstStageIsTheEvaluationItReplaces).
+    ReducedHalfCarModel::Evaluation accepted;
+    double tAccepted = std::numeric_limits<double>::quiet_NaN();
     auto accept = [&](double t) -> const std::vector<double>& {
-        const ReducedHalfCarModel::Evaluation e = model.evaluate(t, y, mem, &st.modes);
+        accepted = model.evaluate(t, y, mem, &st.modes);
+        tAccepted = t;
+        const ReducedHalfCarModel::Evaluation& e = accepted;
         energy[1] += ReducedHalfCarModel::calcSliderDissipation(mem, e.truck);
-        mem.mode = e.truck.mode;
-        mem.compression = e.truck.compression;
-        mem.wedgeAnchor = e.truck.wedgeAnchor;
-        mem.lateralDeflection = e.truck.lateral;
-        mem.lateralAnchor = e.truck.lateralAnchor;
-        mem.rollBolster = e.truck.rollBolster;
-        mem.rollWheelset = e.truck.rollWheelset;
+        mem = ReducedHalfCarModel::makeMemoryAfter(e.truck);
         if (!e.truck.consistent) ++st.inconsistentSteps;
         model.calcChannels(t, y, e, row, energy);
         std::vector<double> full{t};
@@ -250,7 +269,8 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     long k = 0;
     for (; k < total && !result.stop; ++k) {
         const double t = double(k) * h, dt = k < n ? h : last;
-        const ReducedHalfCarModel::Evaluation e1 = model.evaluate(t, y, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e1 =
+            t == tAccepted && accepted.truck.consistent ? accepted : model.evaluate(t, y, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + dt / 2, y + dt / 2 * e1.derivative, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + dt / 2, y + dt / 2 * e2.derivative, mem, &st.modes);
         const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + dt, y + dt * e3.derivative, mem, &st.modes);

@@ -53,6 +53,7 @@ public:
         State derivative;
         TruckSolution truck;
         double railInputPower = 0;  ///< energy audit: Σ W_i·ż_rail,i [W]
+        RailState rail;             ///< the rails at the evaluation's time
     };
 
     ReducedHalfCarModel(const CarParameters& car, RailStateFunction rails, ReducedOptions options = {});
@@ -86,12 +87,16 @@ public:
     /// Energy dissipated by the wedges' sliders when the truck memory moves from
     /// `before` to the solution `after`: Σ |Φ_i|·|ΔZ_a,i| + |Φ_H|·|ΔY_a| [J].
     static double calcSliderDissipation(const TruckMemory& before, const TruckSolution& after);
+    /// What the truck remembers after accepting `accepted`: its mode, compressions,
+    /// anchors, lateral deflection and rolls.
+    static TruckMemory makeMemoryAfter(const TruckSolution& accepted);
     const TruckGeometry& getTruckGeometry() const { return truck_; }
     double getMass() const { return mass_; }
     double getInertia() const { return inertia_; }
     TruckInputs makeTruckInputs(double t, const State& y, const TruckMemory& memory) const;
 
 private:
+    TruckInputs makeTruckInputs(const RailState& rail, const State& y, const TruckMemory& memory) const;
     void declareChannels();
     CarParameters car_;
     RailStateFunction rails_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bitset>
 #include <memory>
 #include <cmath>
 #include <limits>
@@ -336,7 +337,7 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
                             ? in.lateralAnchor
                             : Y - sol.lateralFriction / (2 * g.kBristleLateral);
     sol.violation = worst;
-    sol.consistent = worst <= 1e-9;
+    sol.consistent = worst <= kConsistentViolation;
     return sol;
 }
 
@@ -549,22 +550,108 @@ double calcChoiceBound(const TruckGeometry& g, const TruckInputs& in, const Truc
     return ChoiceBounds(g, in).getBound(mode);
 }
 
+namespace {
+/// The search order's first consistent mode, or false when no mode is consistent.
+/// Every mode of the order (the previous mode, its one-choice neighbours, their
+/// one-choice neighbours, every mode) is either consistent or not whatever came
+/// before it, so the search can leave out, unsolved, what cannot be consistent:
+///   - a mode it has already considered (the two-choice lists repeat each one-choice
+///     neighbour and each two-choice mode twice, the enumeration repeats them all);
+///   - a mode whose choice bound exceeds kConsistentViolation (its violation is at
+///     least the bound); in the enumeration the bound's three factors (each side's
+///     spring and wedge, the gibs and lateral wedges) are tested before the mode is
+///     built, so a ruled-out combination costs one table look-up.
+/// The first consistent mode it finds is the first consistent mode of the order: what
+/// the exhaustive search returns, bit for bit (test
+/// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
+bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bounds, const TruckMode& previous,
+                         TruckSearchCounts& n, TruckSolution& found) {
+    std::bitset<TruckModeCache::kModeCount> seen;
+    seen.set(size_t(TruckModeCache::getIndex(previous)));
+    auto consider = [&](const TruckMode& m) {
+        const size_t index = size_t(TruckModeCache::getIndex(m));
+        if (seen.test(index)) return false;
+        seen.set(index);
+        if (bounds.getBound(m) > kConsistentViolation) {
+            ++n.skipped;
+            return false;
+        }
+        ++n.solves;
+        TruckSolution s = context.solve(m);
+        if (!s.consistent) return false;
+        found = s;
+        return true;
+    };
+    std::array<TruckMode, kMaxNeighbours> first, second;
+    const int nFirst = fillNeighbourModes(previous, first);
+    for (int i = 0; i < nFirst; ++i)
+        if (consider(first[i])) return true;
+    for (int i = 0; i < nFirst; ++i) {
+        const int nSecond = fillNeighbourModes(first[i], second);
+        for (int j = 0; j < nSecond; ++j)
+            if (consider(second[j])) return true;
+    }
+    ++n.enumerations;
+    // enumerateTruckModes' order, with the bound's factors tested first.
+    std::array<std::array<std::array<bool, 3>, 3>, 2> sideOk{};
+    std::array<std::array<bool, 3>, 3> lateralOk{};
+    for (int s = 0; s < 3; ++s)
+        for (int w = 0; w < 3; ++w) {
+            for (int i : {0, 1}) sideOk[i][s][w] = bounds.vertical[i][s][w] <= kConsistentViolation;
+            lateralOk[s][w] = bounds.lateral[s][w] <= kConsistentViolation;
+        }
+    TruckMode m;
+    for (int support = 0; support < 8; ++support)
+        for (int wheels = 0; wheels < 3; ++wheels) {
+            m.support = CarBodySupport(support);
+            m.wheels = WheelContact(wheels);
+            for (int sp = 0; sp < 9; ++sp) {
+                const int s0 = (sp / 3 + 1) % 3, s1 = (sp % 3 + 1) % 3;  // linear first
+                for (int f = 0; f < 9; ++f) {
+                    const int w0 = f / 3, w1 = f % 3;
+                    if (!sideOk[0][s0][w0] || !sideOk[1][s1][w1]) {
+                        n.skipped += 9;
+                        continue;
+                    }
+                    m.spring = {SpringSegment(s0), SpringSegment(s1)};
+                    m.wedge = {WedgeState(w0), WedgeState(w1)};
+                    for (int lat = 0; lat < 9; ++lat) {
+                        if (!lateralOk[lat / 3][lat % 3]) {
+                            ++n.skipped;
+                            continue;
+                        }
+                        m.lateralWedge = WedgeState(lat / 3);
+                        m.gib = GibContact(lat % 3);
+                        if (consider(m)) return true;
+                    }
+                }
+            }
+        }
+    return false;
+}
+}  // namespace
+
 TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache,
                                    TruckSearchCounts* counts, TruckSearchPruning pruning) {
     // 1. The previous mode; 2. every mode that differs from it in one choice,
     // then in two (contacts often open and close together); 3. every mode.
     // First consistent wins; else the smallest violation (the first of equals).
     const SearchContext context(cache.getGeometry(), in, cache);
-    const ChoiceBounds bounds(cache.getGeometry(), in);
-    const bool prune = pruning == TruckSearchPruning::ChoiceBounds;
     TruckSearchCounts local;
     TruckSearchCounts& n = counts ? *counts : local;
     ++n.searches;
     ++n.solves;
     TruckSolution best = context.solve(previous);
     if (best.consistent) return best;
-    // True when m is consistent (best is then its solution). A mode whose bound is at
-    // least best.violation (> 1e-9 here) is neither consistent nor a smaller violation.
+    const ChoiceBounds bounds(cache.getGeometry(), in);
+    const bool prune = pruning == TruckSearchPruning::ChoiceBounds;
+    if (prune) {
+        TruckSolution found;
+        if (findFirstConsistent(context, bounds, previous, n, found)) return found;
+    }
+    // No mode is consistent (or Exhaustive): the smallest violation, the first of
+    // equals in the search order. A mode whose bound is at least best.violation
+    // (> kConsistentViolation here) is neither consistent nor a smaller violation.
     auto consider = [&](const TruckMode& m) {
         if (prune && bounds.getBound(m) >= best.violation) {
             ++n.skipped;
@@ -584,7 +671,7 @@ TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previ
         for (int j = 0; j < nSecond; ++j)
             if (!(second[j] == previous) && consider(second[j])) return best;
     }
-    ++n.enumerations;
+    if (!prune) ++n.enumerations;  // the pruned search counted it in findFirstConsistent
     static const std::vector<TruckMode> modes = enumerateTruckModes();
     for (const TruckMode& m : modes)
         if (consider(m)) return best;

@@ -88,6 +88,10 @@ struct TruckInputs {
     std::array<double, 2> wedgeAnchor{0, 0};     ///< Z_a of each wedge at the last accepted step [m]
 };
 
+/// A mode is consistent when its largest inequality violation (forces in 10 kN, lengths
+/// in 0.1 mm) is at most this.
+inline constexpr double kConsistentViolation = 1e-9;
+
 struct TruckSolution {
     TruckMode mode;
     double zBolster = 0, rollBolster = 0, zWheelset = 0, rollWheelset = 0, yBolster = 0;
@@ -158,6 +162,8 @@ enum class TruckSearchPruning { ChoiceBounds, Exhaustive };
 
 /// The mode search: the previous mode, then its neighbours, then every mode;
 /// the first consistent one, or (none consistent) the one with the smallest violation.
+/// With ChoiceBounds it skips, unsolved, the modes it has already considered and those
+/// whose bound rules out consistency (same answer, bit for bit).
 TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in, const TruckMode& previous);
 /// The same search with the cache's factorizations (same result, bit for bit).
 TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache,
