@@ -121,7 +121,7 @@ double ReducedHalfCarModel::calcStaticWheelLoad() const {
     return findTruckEquilibrium(in, memory.mode, *modeCache_).wheel[0];
 }
 
-ReducedHalfCarModel::Sample ReducedHalfCarModel::calcSample(double t, const State& y, const Evaluation& e,
+ReducedHalfCarModel::Sample ReducedHalfCarModel::calcSample(double /*t: e.rail is at t*/, const State& y, const Evaluation& e,
                                                             const double* energyIntegrals) const {
     Sample s;
     s.truck = e.truck;

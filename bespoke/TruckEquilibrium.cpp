@@ -276,6 +276,73 @@ void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
     for (int i = 0; i < N; ++i) f.p[i] = int(lu.permutationP().indices()[i]), f.q[i] = int(lu.permutationQ().indices()[i]);
 }
 
+/// x from the factorization: b row-scaled, solved, unknowns unscaled.
+Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
+    Eigen::Matrix<double, N, 1> bs = b;
+    for (int r = 0; r < N; ++r)
+        if (f.rowScale[r] > 0) bs[r] /= f.rowScale[r];
+    return getColumnScale().asDiagonal() * f.solve(bs);
+}
+
+/// Every inequality of a mode at its solution x, as need(value, minimum, unit) for
+/// "value ≥ minimum", whose violation is (minimum − value)/unit (forces in units of
+/// 10 kN, lengths in units of 0.1 mm). need returns false to stop early. The one
+/// definition of the checks: solveFactored takes the largest violation, isConsistent
+/// stops at the first one above kConsistentViolation. The forces come first: they are
+/// unknowns themselves, and most modes that fail fail on one.
+template <class Need>
+void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
+                       const Eigen::Matrix<double, N, 1>& x, Need&& need) {
+    for (int i : {0, 1})
+        if (!need(x[FCL + i], 0, 1e4) || !need(x[FSL + i], 0, 1e4) || !need(x[WL + i], 0, 1e4)) return;
+    for (int i : {0, 1}) {
+        if (!need(k.rimGap[i].evaluate(x), 0, 1e-4) || !need(k.padGap[i].evaluate(x), 0, 1e-4) ||
+            !need(k.treadLift[i].evaluate(x), 0, 1e-4))
+            return;
+        const double Z = k.compression[i].evaluate(x);
+        switch (mode.spring[i]) {
+        case SpringSegment::Free:
+            if (!need(0, Z, 1e-4)) return;
+            break;
+        case SpringSegment::Linear:
+            if (!need(Z, 0, 1e-4) || !need(g.travel, Z, 1e-4)) return;
+            break;
+        case SpringSegment::Bottomed:
+            if (!need(Z, g.travel, 1e-4)) return;
+            break;
+        }
+        const double dZ = Z - in.compressionOld[i];
+        switch (mode.wedge[i]) {
+        case WedgeState::Stick:
+            if (!need(g.Fv, std::abs(x[PHIL + i]), 1e4)) return;
+            break;
+        case WedgeState::SlipUp:  // Z falling
+            if (!need(0, dZ, 1e-4)) return;
+            break;
+        case WedgeState::SlipDown:  // Z rising
+            if (!need(dZ, 0, 1e-4)) return;
+            break;
+        }
+    }
+    const double Y = k.lateral.evaluate(x), dY = Y - in.lateralOld;
+    switch (mode.gib) {
+    case GibContact::Open:
+        if (!need(Y, -g.gibClearance, 1e-4) || !need(g.gibClearance, Y, 1e-4)) return;
+        break;
+    case GibContact::Positive:
+        if (!need(Y, g.gibClearance, 1e-4)) return;
+        break;
+    case GibContact::Negative:
+        if (!need(-g.gibClearance, Y, 1e-4)) return;
+        break;
+    }
+    switch (mode.lateralWedge) {
+    case WedgeState::Stick: need(2 * g.Fh, std::abs(x[PHIH]), 1e4); break;
+    case WedgeState::SlipUp: need(dY, 0, 1e-4); break;
+    case WedgeState::SlipDown: need(0, dY, 1e-4); break;
+    }
+}
+
 /// Solves with the factorization and checks every inequality of the mode.
 TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
                             const std::array<Linear, 2>& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
@@ -285,62 +352,45 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
         sol.violation = 1e300;
         return sol;
     }
-    Eigen::Matrix<double, N, 1> bs = b;
-    for (int r = 0; r < N; ++r)
-        if (f.rowScale[r] > 0) bs[r] /= f.rowScale[r];
-    const Eigen::Matrix<double, N, 1> x = getColumnScale().asDiagonal() * f.solve(bs);
+    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
     sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
     sol.lateral = k.lateral.evaluate(x);
-    double worst = 0;  // forces in units of 10 kN, lengths in units of 0.1 mm
-    auto needAtLeast = [&worst](double value, double minimum, double unit) {
-        worst = std::max(worst, (minimum - value) / unit);
-    };
     for (int i : {0, 1}) {
         sol.rim[i] = x[FCL + i], sol.sideBearing[i] = x[FSL + i], sol.wheel[i] = x[WL + i];
         sol.friction[i] = x[PHIL + i];
         sol.compression[i] = k.compression[i].evaluate(x);
         sol.spring[i] = P[i].evaluate(x);
         sol.wheelLift[i] = std::max(0.0, k.treadLift[i].evaluate(x));
-        needAtLeast(sol.rim[i], 0, 1e4);
-        needAtLeast(sol.sideBearing[i], 0, 1e4);
-        needAtLeast(sol.wheel[i], 0, 1e4);
-        needAtLeast(k.rimGap[i].evaluate(x), 0, 1e-4);
-        needAtLeast(k.padGap[i].evaluate(x), 0, 1e-4);
-        needAtLeast(k.treadLift[i].evaluate(x), 0, 1e-4);
-        const double Z = sol.compression[i];
-        switch (mode.spring[i]) {
-        case SpringSegment::Free: needAtLeast(0, Z, 1e-4); break;
-        case SpringSegment::Linear: needAtLeast(Z, 0, 1e-4), needAtLeast(g.travel, Z, 1e-4); break;
-        case SpringSegment::Bottomed: needAtLeast(Z, g.travel, 1e-4); break;
-        }
-        const double dZ = Z - in.compressionOld[i];
-        sol.wedgeAnchor[i] = mode.wedge[i] == WedgeState::Stick ? in.wedgeAnchor[i] : Z - sol.friction[i] / g.kBristle;
-        switch (mode.wedge[i]) {
-        case WedgeState::Stick: needAtLeast(g.Fv, std::abs(sol.friction[i]), 1e4); break;
-        case WedgeState::SlipUp: needAtLeast(0, dZ, 1e-4); break;    // Z falling
-        case WedgeState::SlipDown: needAtLeast(dZ, 0, 1e-4); break;  // Z rising
-        }
-    }
-    const double Y = sol.lateral, dY = Y - in.lateralOld;
-    switch (mode.gib) {
-    case GibContact::Open: needAtLeast(Y, -g.gibClearance, 1e-4), needAtLeast(g.gibClearance, Y, 1e-4); break;
-    case GibContact::Positive: needAtLeast(Y, g.gibClearance, 1e-4); break;
-    case GibContact::Negative: needAtLeast(-g.gibClearance, Y, 1e-4); break;
-    }
-    switch (mode.lateralWedge) {
-    case WedgeState::Stick: needAtLeast(2 * g.Fh, std::abs(sol.lateralFriction), 1e4); break;
-    case WedgeState::SlipUp: needAtLeast(dY, 0, 1e-4); break;
-    case WedgeState::SlipDown: needAtLeast(0, dY, 1e-4); break;
+        sol.wedgeAnchor[i] =
+            mode.wedge[i] == WedgeState::Stick ? in.wedgeAnchor[i] : sol.compression[i] - sol.friction[i] / g.kBristle;
     }
     sol.lateralAnchor = mode.lateralWedge == WedgeState::Stick
                             ? in.lateralAnchor
-                            : Y - sol.lateralFriction / (2 * g.kBristleLateral);
+                            : sol.lateral - sol.lateralFriction / (2 * g.kBristleLateral);
+    double worst = 0;  // a NaN check leaves it as it is, as std::max does
+    checkInequalities(g, in, mode, k, x, [&worst](double value, double minimum, double unit) {
+        worst = std::max(worst, (minimum - value) / unit);
+        return true;
+    });
     sol.violation = worst;
     sol.consistent = worst <= kConsistentViolation;
     return sol;
 }
 
+/// solveFactored(...).consistent, without building the solution, stopping at the first
+/// violation above kConsistentViolation (the same checks on the same x: the same answer).
+bool isConsistentFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
+                          const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
+    if (!f.invertible) return false;
+    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
+    bool consistent = true;
+    checkInequalities(g, in, mode, k, x, [&consistent](double value, double minimum, double unit) {
+        if ((minimum - value) / unit > kConsistentViolation) consistent = false;  // NaN: no violation, as above
+        return consistent;
+    });
+    return consistent;
+}
 
 }  // namespace
 
@@ -416,8 +466,17 @@ int TruckModeCache::getIndex(const TruckMode& m) {
     return (((int(m.support) * 3 + int(m.wheels)) * 9 + sp) * 9 + f) * 9 + lat;
 }
 
+TruckMode TruckModeCache::getMatrixClass(const TruckMode& m) {
+    TruckMode c = m;
+    for (WedgeState& w : c.wedge)
+        if (w == WedgeState::SlipDown) w = WedgeState::SlipUp;
+    if (c.lateralWedge == WedgeState::SlipDown) c.lateralWedge = WedgeState::SlipUp;
+    if (c.gib == GibContact::Negative) c.gib = GibContact::Positive;
+    return c;
+}
+
 const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
-    std::atomic<Factor*>& slot = slots_[getIndex(mode)];
+    std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     // A depends on the mode and the geometry only; `in` only fills b, which is discarded.
     const Kinematics k = makeKinematics(geometry_, in);
@@ -451,6 +510,12 @@ struct SearchContext {
         Eigen::Matrix<double, N, 1> b;
         assembleRhs(g, in, mode, k, P, b);
         return solveFactored(g, in, mode, k, P, cache.getFactor(mode, in), b);
+    }
+    bool isConsistent(const TruckMode& mode) const {
+        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+        Eigen::Matrix<double, N, 1> b;
+        assembleRhs(g, in, mode, k, P, b);
+        return isConsistentFactored(g, in, mode, k, cache.getFactor(mode, in), b);
     }
 };
 
@@ -535,6 +600,10 @@ int fillNeighbourModes(const TruckMode& m, std::array<TruckMode, kMaxNeighbours>
 }
 }  // namespace
 
+TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache) {
+    return SearchContext(cache.getGeometry(), in, cache).solve(mode);
+}
+
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
     std::array<TruckMode, kMaxNeighbours> a;
     const int n = fillNeighbourModes(m, a);
@@ -577,9 +646,8 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
             return false;
         }
         ++n.solves;
-        TruckSolution s = context.solve(m);
-        if (!s.consistent) return false;
-        found = s;
+        if (!context.isConsistent(m)) return false;
+        found = context.solve(m);
         return true;
     };
     std::array<TruckMode, kMaxNeighbours> first, second;

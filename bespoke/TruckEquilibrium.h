@@ -124,8 +124,11 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
 
 /// Per-mode factorizations of the truck's equations for one geometry. A mode's
 /// matrix depends on the mode and the geometry only (the inputs enter the right-hand
-/// side alone), so each mode is factored once, on first use, and reused: the
-/// solutions are bit-identical to solveTruckMode's. Thread-safe (lock-free slots).
+/// side alone), so each matrix is factored once, on first use, and reused: the
+/// solutions are bit-identical to solveTruckMode's. Modes that differ only in the
+/// direction of a slip (±F_V, ±2F_H) or the side of the gib contact (±K_gib·c) differ
+/// in the right-hand side alone and share one factorization (getMatrixClass; test
+/// ReducedModel.CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve). Thread-safe (lock-free slots).
 class TruckModeCache {
 public:
     static constexpr int kModeCount = 8 * 3 * 9 * 9 * 9;
@@ -135,6 +138,8 @@ public:
     TruckModeCache& operator=(const TruckModeCache&) = delete;
     const TruckGeometry& getGeometry() const { return geometry_; }
     static int getIndex(const TruckMode& m);  ///< 0 … kModeCount − 1, in enumerateTruckModes() order
+    /// The mode whose matrix m's is: slips up, gib +.
+    static TruckMode getMatrixClass(const TruckMode& m);
     struct Factor;
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
 
@@ -142,6 +147,9 @@ private:
     TruckGeometry geometry_;
     mutable std::vector<std::atomic<Factor*>> slots_;
 };
+
+/// solveTruckMode with the cache's factorization (bit-identical).
+TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache);
 
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
