@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bitset>
+#include <cstdint>
 #include <memory>
 #include <cmath>
 #include <limits>
@@ -225,10 +226,65 @@ struct ModeFactor {
     Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
     bool invertible = false;
 
+    /// The nonzero off-diagonal entries of L and of U, row by row (about 40 of L's 105
+    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]).
+    std::array<std::uint8_t, N + 1> lowerStart{}, upperStart{};
+    std::array<std::uint8_t, N * (N - 1) / 2> lowerColumn{}, upperColumn{};
+    std::array<double, N * (N - 1) / 2> lowerValue{}, upperValue{};
+
+    void compress() {
+        int nl = 0, nu = 0;
+        for (int i = 0; i < N; ++i) {
+            lowerStart[i] = std::uint8_t(nl), upperStart[i] = std::uint8_t(nu);
+            for (int j = 0; j < i; ++j)
+                if (lu(i, j) != 0) lowerColumn[nl] = std::uint8_t(j), lowerValue[nl++] = lu(i, j);
+            for (int j = i + 1; j < N; ++j)
+                if (lu(i, j) != 0) upperColumn[nu] = std::uint8_t(j), upperValue[nu++] = lu(i, j);
+        }
+        lowerStart[N] = std::uint8_t(nl), upperStart[N] = std::uint8_t(nu);
+    }
+
     /// FullPivLU::solve's steps (x = Q·U⁻¹·L⁻¹·P·b) by plain substitution: Eigen's
     /// blocked triangular solves cost ~1 µs at this size, the loops ~0.1 µs. Same
     /// factors; only the rounding of the sums differs.
+    ///
+    /// Each row's sum runs over the nonzero entries alone, in the dense loop's order.
+    /// Leaving out a term l·c with l = 0 (c finite, so l·c = ±0) cannot change a
+    /// nonzero running sum, nor a +0 one (+0 − ±0 = +0); it changes only a −0 sum that
+    /// the dense loop would turn into +0 (−0 − (−0) = +0). A sum becomes −0 only by
+    /// starting as −0 (an exact cancellation gives +0). So the two sums are equal at
+    /// every step, or both zero and the sparse one −0 where the row started at −0: a row
+    /// that starts at −0 and sums to zero (or to something not finite) is summed again
+    /// by the dense loop, over rows before it that are the dense loop's by induction
+    /// (test ReducedModel.CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve).
     Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b) const {
+        double c[N];
+        for (int i = 0; i < N; ++i) c[p[i]] = b[i];
+        for (int i = 1; i < N; ++i) {
+            double v = c[i];
+            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= lowerValue[k] * c[lowerColumn[k]];
+            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
+                v = c[i];
+                for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
+            }
+            c[i] = v;
+        }
+        for (int i = N - 1; i >= 0; --i) {
+            double v = c[i];
+            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= upperValue[k] * c[upperColumn[k]];
+            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
+                v = c[i];
+                for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
+            }
+            c[i] = v / lu(i, i);
+        }
+        Eigen::Matrix<double, N, 1> x;
+        for (int i = 0; i < N; ++i) x[q[i]] = c[i];
+        return x;
+    }
+
+    /// The dense loops: what solve must equal, bit for bit.
+    Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b) const {
         double c[N];
         for (int i = 0; i < N; ++i) c[p[i]] = b[i];
         for (int i = 1; i < N; ++i) {
@@ -274,14 +330,16 @@ void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
     f.invertible = lu.isInvertible();
     f.lu = lu.matrixLU();
     for (int i = 0; i < N; ++i) f.p[i] = int(lu.permutationP().indices()[i]), f.q[i] = int(lu.permutationQ().indices()[i]);
+    f.compress();
 }
 
 /// x from the factorization: b row-scaled, solved, unknowns unscaled.
-Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
+Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b,
+                                        TruckSubstitution substitution = TruckSubstitution::Sparse) {
     Eigen::Matrix<double, N, 1> bs = b;
     for (int r = 0; r < N; ++r)
         if (f.rowScale[r] > 0) bs[r] /= f.rowScale[r];
-    return getColumnScale().asDiagonal() * f.solve(bs);
+    return getColumnScale().asDiagonal() * (substitution == TruckSubstitution::Sparse ? f.solve(bs) : f.solveDense(bs));
 }
 
 /// Every inequality of a mode at its solution x, as need(value, minimum, unit) for
@@ -345,14 +403,15 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
 
 /// Solves with the factorization and checks every inequality of the mode.
 TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                            const std::array<Linear, 2>& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
+                            const std::array<Linear, 2>& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b,
+                            TruckSubstitution substitution = TruckSubstitution::Sparse) {
     TruckSolution sol;
     sol.mode = mode;
     if (!f.invertible) {
         sol.violation = 1e300;
         return sol;
     }
-    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
+    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b, substitution);
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
     sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
     sol.lateral = k.lateral.evaluate(x);
@@ -437,7 +496,8 @@ TruckGeometry::TruckGeometry(const CarParameters& car)
       kBristleLateral(car.calcLateralBristleStiffness()),
       kPin(car.contactStiffnessScale * car.centerPinStiffness) {}
 
-TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
+TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode,
+                             TruckSubstitution substitution) {
     const Kinematics k = makeKinematics(g, in);
     std::array<Linear, 2> P;
     for (int i : {0, 1}) P[i] = makeSpringForce(g, k.compression[i], mode.spring[i]);
@@ -446,7 +506,7 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     assembleSystem(g, in, mode, k, P, A, b);
     ModeFactor f;
     factorSystem(A, f);
-    return solveFactored(g, in, mode, k, P, f, b);
+    return solveFactored(g, in, mode, k, P, f, b, substitution);
 }
 
 // ---- TruckModeCache -------------------------------------------------------

@@ -118,9 +118,14 @@ struct TruckGeometry {
     explicit TruckGeometry(const CarParameters& car);
 };
 
+/// How a solve substitutes through the factors: over their nonzero entries (what the
+/// model uses), or over every entry (the reference it must equal bit for bit).
+enum class TruckSubstitution { Sparse, Dense };
+
 /// Solves one mode: the 12 linear equations above, and the consistency checks.
 /// Returns a solution with consistent = false if the mode's system is singular.
-TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
+TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode,
+                             TruckSubstitution substitution = TruckSubstitution::Sparse);
 
 /// Per-mode factorizations of the truck's equations for one geometry. A mode's
 /// matrix depends on the mode and the geometry only (the inputs enter the right-hand
