@@ -22,7 +22,7 @@ ReducedHalfCarModel::ReducedHalfCarModel(const CarParameters& car, RailStateFunc
         truck_.bolsterWeight = car.bolsterWeight;
         truck_.wheelsetWeight = 2 * (car.wheelsetWeight + car.sideFrameWeight);
     }
-    modeCache_ = std::make_shared<const TruckModeCache>(truck_);
+    modeCache_ = TruckModeCache::getShared(truck_);
     mass_ = car.getCarBodyWeight() / 2 / units::g;
     inertia_ = car.rollInertia / 2;
     staticZ_ = makeStaticState()[2];

@@ -102,7 +102,7 @@ private:
     RailStateFunction rails_;
     TruckGeometry truck_;
     TruckWeight truckWeight_ = TruckWeight::Massless;
-    std::shared_ptr<const TruckModeCache> modeCache_;  // per-mode factorizations (shared by copies)
+    std::shared_ptr<const TruckModeCache> modeCache_;  // per-mode factorizations (TruckModeCache::getShared)
     double mass_ = 0, inertia_ = 0, staticZ_ = 0;
     ChannelTable<Sample> channels_;
 };

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <atomic>
 #include <bitset>
+#include <cstring>
+#include <deque>
+#include <mutex>
 #include <cstdint>
 #include <memory>
 #include <cmath>
@@ -514,6 +517,23 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
 struct TruckModeCache::Factor : ModeFactor {};
 
 TruckModeCache::TruckModeCache(const TruckGeometry& g) : geometry_(g), slots_(kModeCount) {}
+
+std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeometry& g) {
+    static_assert(sizeof(TruckGeometry) % sizeof(double) == 0, "TruckGeometry holds doubles alone (compared bytewise)");
+    static std::mutex mutex;
+    static std::deque<std::shared_ptr<const TruckModeCache>> kept;  // most recent last
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+        if (std::memcmp(&(*it)->geometry_, &g, sizeof g) == 0) {
+            std::shared_ptr<const TruckModeCache> found = *it;
+            kept.erase(it);
+            kept.push_back(found);
+            return found;
+        }
+    kept.push_back(std::make_shared<const TruckModeCache>(g));
+    if (int(kept.size()) > kSharedGeometries) kept.pop_front();
+    return kept.back();
+}
 
 TruckModeCache::~TruckModeCache() {
     for (auto& s : slots_) delete s.load(std::memory_order_relaxed);

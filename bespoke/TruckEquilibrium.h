@@ -48,6 +48,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -138,6 +139,11 @@ class TruckModeCache {
 public:
     static constexpr int kModeCount = 8 * 3 * 9 * 9 * 9;
     explicit TruckModeCache(const TruckGeometry& g);
+    /// A cache for g shared by every model of the process whose truck has the same
+    /// geometry, bit for bit (the last kSharedGeometries geometries asked for are
+    /// kept): a study over speeds, amplitudes or tracks factors each matrix once.
+    static std::shared_ptr<const TruckModeCache> getShared(const TruckGeometry& g);
+    static constexpr int kSharedGeometries = 4;
     ~TruckModeCache();
     TruckModeCache(const TruckModeCache&) = delete;
     TruckModeCache& operator=(const TruckModeCache&) = delete;

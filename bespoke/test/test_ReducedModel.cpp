@@ -295,6 +295,18 @@ TEST(ReducedModel, CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve) {
     EXPECT_GT(consistent, 0);
 }
 
+// Models of one geometry share one cache; another geometry gets its own.
+TEST(ReducedModel, ModelsOfOneTruckGeometryShareTheirModeCache) {
+    const TruckGeometry g = makeLevelModel().getTruckGeometry();
+    TruckGeometry stiffer = g;
+    stiffer.Kv *= 1.01;
+    const auto a = TruckModeCache::getShared(g), b = TruckModeCache::getShared(g), c = TruckModeCache::getShared(stiffer);
+    EXPECT_EQ(a.get(), b.get());
+    EXPECT_NE(a.get(), c.get());
+    EXPECT_EQ(c->getGeometry().Kv, stiffer.Kv);
+    EXPECT_EQ(a->getGeometry().Kv, g.Kv);
+}
+
 namespace {
 /// Truck inputs far and near the static state (rolled, shifted, lifted car body; rails
 /// apart; remembered compressions, anchors and lateral deflections moved), from a fixed seed.

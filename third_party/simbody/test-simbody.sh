@@ -21,7 +21,8 @@ echo "test-simbody.sh: building Simbody's tests in $work/build-tests (Release, $
 cmake -S "$srcdir" -B "$work/build-tests" -G Ninja \
   -DCMAKE_BUILD_TYPE=Release \
   -DBUILD_VISUALIZER=OFF -DBUILD_EXAMPLES=OFF -DBUILD_TESTING=ON -DINSTALL_DOCS=OFF \
-  -DBUILD_STATIC_LIBRARIES=OFF >"$log" 2>&1 || { tail -40 "$log" >&2; echo "test-simbody.sh: configuring failed; log: $log" >&2; exit 1; }
+  -DBUILD_STATIC_LIBRARIES=OFF \
+  -DSIMBODY_VISUALIZER_INSTALL_DIR="$work/build-tests/libexec/simbody" >"$log" 2>&1 || { tail -40 "$log" >&2; echo "test-simbody.sh: configuring failed; log: $log" >&2; exit 1; }
 cmake --build "$work/build-tests" -j"$(nproc)" >>"$log" 2>&1 || { tail -40 "$log" >&2; echo "test-simbody.sh: building the tests failed; log: $log" >&2; exit 1; }
 status=0
 ctest --test-dir "$work/build-tests" -j"$(nproc)" --output-on-failure >>"$log" 2>&1 || status=1
