@@ -127,6 +127,41 @@ void orbitBranch(benchmark::State& state, bool reuse) {
     state.counters["orbits"] = double(c.amplitudes.size());
     state.counters["map_evaluations"] = double(c.maps);
 }
+// The workflows a parametric study runs (bench/README.md, "Sweeps and studies"), 70-ton
+// loaded, 0.75 in, 20 s a speed: the full car swept 10-35 mph in 0.5 mph steps up and
+// down (102 points, the two sweeps on two threads), and the reduced model swept
+// 10-29.8 mph in 0.2 mph steps up (100 points, one thread). Wall and CPU seconds of the
+// whole workflow, and simulated seconds per CPU second.
+void sweepWorkflow(benchmark::State& state, const std::string& model, double fromMph, double toMph, double stepMph,
+                   bool bothWays) {
+    SweepSpec spec;
+    spec.scenario = getDefaultScenario();
+    spec.scenario.model = model;
+    spec.scenario.run.duration = 20;
+    spec.fromMph = fromMph, spec.toMph = toMph, spec.stepMph = stepMph;
+    std::vector<SweepSpec> specs{spec};
+    if (bothWays) {
+        specs.push_back(spec);
+        specs.back().direction = SweepDirection::Down;
+    }
+    std::vector<std::vector<SweepPoint>> sweeps;
+    const std::clock_t c0 = std::clock();
+    for (auto _ : state) sweeps = runSweeps(specs, int(specs.size()));
+    const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC / double(state.iterations());
+    double simulated = 0;
+    long points = 0, failed = 0;
+    for (const auto& sweep : sweeps)
+        for (const SweepPoint& p : sweep) {
+            ++points;
+            if (p.failed) ++failed;
+            else simulated += p.summary.simTimeS;
+        }
+    state.counters["points"] = double(points);
+    state.counters["failed"] = double(failed);
+    state.counters["cpu_s"] = cpu;
+    state.counters["sim_s_per_cpu_s"] = simulated / cpu;
+}
+
 // Cost of one right-hand-side evaluation: realize a perturbed state through
 // Acceleration, with every force element enabled or with all of them disabled
 // (Simbody's own floor for the same bodies and mobilities).
@@ -185,6 +220,12 @@ int main(int argc, char** argv) {
                                      [m = std::string(model)](benchmark::State& s) { orbitPoint(s, m); })
             ->Iterations(1)
             ->Unit(benchmark::kSecond);
+    benchmark::RegisterBenchmark("workflow/fullcar_sweep_102", [](benchmark::State& s) {
+        sweepWorkflow(s, model_names::kFullCar, 10, 35, 0.5, true);
+    })->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+    benchmark::RegisterBenchmark("workflow/reduced_study_100", [](benchmark::State& s) {
+        sweepWorkflow(s, model_names::kReduced, 10, 29.8, 0.2, false);
+    })->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
     for (bool reuse : {false, true})
         benchmark::RegisterBenchmark(reuse ? "orbitbranch/eom/chord" : "orbitbranch/eom/fresh",
                                      [reuse](benchmark::State& s) { orbitBranch(s, reuse); })
