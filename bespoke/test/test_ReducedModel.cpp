@@ -295,6 +295,51 @@ TEST(ReducedModel, CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve) {
     EXPECT_GT(consistent, 0);
 }
 
+// The search's order decides its answer: along a rocking run some states have more
+// than one consistent mode, with different wedge states and different forces.
+TEST(ReducedModel, SeveralModesCanBeConsistentAtOneState) {
+    const ReducedHalfCarModel m(getCar(), [](double t) {
+        const double w = 2 * M_PI * 1.3, a = 1.0 * units::inch * std::sin(w * t), v = 1.0 * units::inch * w * std::cos(w * t);
+        return RailState{{a, -a}, {v, -v}};
+    });
+    const TruckModeCache& cache = *TruckModeCache::getShared(m.getTruckGeometry());
+    const auto modes = enumerateTruckModes();
+    auto y = m.makeStaticState();
+    auto mem = m.makeStaticMemory();
+    const double h = ReducedHalfCarModel::kStep;
+    int states = 0, several = 0;
+    double largestForceGap = 0;
+    for (int k = 0; k < 600; ++k) {
+        const double t = k * h;
+        const auto e = m.evaluate(t, y, mem);
+        if (k % 10 == 0) {
+            const TruckInputs in = m.makeTruckInputs(t, y, mem);
+            std::vector<TruckSolution> consistent;
+            for (const TruckMode& mode : modes) {
+                const TruckSolution s = solveTruckMode(in, mode, cache);
+                if (s.consistent) consistent.push_back(s);
+            }
+            ++states;
+            if (consistent.size() > 1) {
+                ++several;
+                for (const TruckSolution& s : consistent)
+                    for (int i : {0, 1})
+                        largestForceGap = std::max(largestForceGap, std::abs(s.wheel[i] - consistent[0].wheel[i]));
+            }
+        }
+        const auto k2 = m.evaluate(t + h / 2, y + h / 2 * e.derivative, mem).derivative;
+        const auto k3 = m.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
+        const auto k4 = m.evaluate(t + h, y + h * k3, mem).derivative;
+        y += h / 6 * (e.derivative + 2 * k2 + 2 * k3 + k4);
+        mem = ReducedHalfCarModel::makeMemoryAfter(m.evaluate(t + h, y, mem).truck);
+    }
+    EXPECT_EQ(states, 60);
+    EXPECT_GT(several, 0) << "no state with two consistent modes";
+    EXPECT_GT(largestForceGap, 1.0 * units::lbf) << "the consistent modes agree on the wheel loads";
+    std::printf("states with more than one consistent mode: %d of %d; wheel loads up to %.0f N apart\n", several, states,
+                largestForceGap);
+}
+
 // Models of one geometry share one cache; another geometry gets its own.
 TEST(ReducedModel, ModelsOfOneTruckGeometryShareTheirModeCache) {
     const TruckGeometry g = makeLevelModel().getTruckGeometry();
