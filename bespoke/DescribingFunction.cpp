@@ -462,7 +462,8 @@ EomHalfCarModel::State DescribingFunctionModel::makeTwinState(const Eigen::Vecto
     int side = 0;
     for (const Element& e : elements_)
         if (const auto* law = std::get_if<ElastoPlasticLaw>(&e.law)) {
-            const double f = evaluateHistory(calcElastoPlasticHistory(*law, calcRelative(q, e)), 0.0);
+            const TrigSeries d = calcRelative(q, e);
+            const double f = evaluateHistory(calcElastoPlasticHistory(*law, d), d, 0.0);
             y[2 * M::kNumDofs + 2 * side] = -f / law->stiffness;
             ++side;
         }

@@ -20,57 +20,64 @@ int getMaxDegree(const std::vector<TrigSeries>& weights) {
     return n;
 }
 
-/// Adds ∫ Q·{1, cos kτ, sin kτ} over [a0.tau, a1.tau] (normalized) to `out`,
-/// Q = g·w_j for each weight (the angles at both ends computed once).
-void addPiece(const TrigSeries& g, const TrigSeries::Angles& a0, const TrigSeries::Angles& a1, int harmonics,
-              const std::vector<TrigSeries>& weights, std::vector<TrigSeries>& out) {
+/// The coefficients up to `harmonics` of f·w_j for each weight w_j, where f = constant_p +
+/// slope_p·d(τ) on each piece p (together one period) plus `viscous`(τ) throughout.
+/// Each piece adds its ∫ cos nτ, ∫ sin nτ (from the angles at its ends, computed once per
+/// cut) to two sets of moments, weighted by its constant and by its slope; then
+///   ∫ f·w_j·h = ∫ w_j·h dM_constant + ∫ (d·w_j)·h dM_slope + (γḋ·w_j's own coefficient),
+/// h ∈ {1, cos kτ, sin kτ}: a few dot products per weight, however many pieces.
+std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, const TrigSeries& d,
+                                        const TrigSeries* viscous, const std::vector<TrigSeries>& weights,
+                                        int harmonics) {
+    const int degree = std::min(TrigSeries::kMaxDegree, d.getDegree() + getMaxDegree(weights) + harmonics);
+    TrigSeries::Moments constant(degree), slope(degree);
+    std::optional<TrigSeries::Angles> a0;
+    for (const ForcePiece& p : pieces) {
+        if (p.t1 - p.t0 <= 0 || (p.constant == 0 && p.slope == 0)) continue;
+        if (p.t1 - p.t0 == 2 * std::numbers::pi) {  // the whole period: exact moments
+            constant.addPeriod(p.constant);
+            slope.addPeriod(p.slope);
+            continue;
+        }
+        if (!a0 || a0->tau != p.t0) a0.emplace(p.t0, degree);
+        const TrigSeries::Angles a1(p.t1, degree);
+        constant.add(*a0, a1, p.constant);
+        slope.add(*a0, a1, p.slope);
+        a0 = a1;
+    }
+    std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
     for (size_t j = 0; j < weights.size(); ++j) {
-        const TrigSeries Q = g * weights[j];
-        out[j].updMean() += Q.integrate(a0, a1) / (2 * std::numbers::pi);
-        for (int k = 1; k <= harmonics; ++k) {
-            out[j].updCos(k) += Q.timesHarmonic(k, false).integrate(a0, a1) / std::numbers::pi;
-            out[j].updSin(k) += Q.timesHarmonic(k, true).integrate(a0, a1) / std::numbers::pi;
+        const TrigSeries& w = weights[j];
+        const TrigSeries dw = d * w;
+        out[j].updMean() = (w.integrate(constant) + dw.integrate(slope)) / (2 * std::numbers::pi);
+        for (int k = 1; k <= harmonics; ++k)
+            for (bool sine : {false, true})
+                (sine ? out[j].updSin(k) : out[j].updCos(k)) =
+                    (w.integrateTimesHarmonic(constant, k, sine) + dw.integrateTimesHarmonic(slope, k, sine)) /
+                    std::numbers::pi;
+        if (viscous) {  // over the whole period: the product's own coefficients
+            const TrigSeries v = *viscous * w;
+            out[j].updMean() += v.getMean();
+            for (int k = 1; k <= harmonics; ++k) out[j].updCos(k) += v.getCos(k), out[j].updSin(k) += v.getSin(k);
         }
     }
+    return out;
 }
 
-/// Integrates Q_j(τ)·{1, cos kτ, sin kτ} over [0, 2π) split at `cuts`, with
-/// Q_j = g(midpoint)·w_j on each piece; `forceDegree` bounds the degree of g.
-template <class LawOn>
-std::vector<TrigSeries> integratePiecewise(std::vector<double> cuts, int harmonics, const std::vector<TrigSeries>& weights,
-                                           int forceDegree, const LawOn& lawOn) {
+/// The pieces between consecutive cuts over [0, 2π), each with the law at its midpoint.
+template <class LawAt>
+std::vector<ForcePiece> makePieces(std::vector<double> cuts, const LawAt& lawAt) {
     cuts.push_back(0);
     cuts.push_back(2 * std::numbers::pi);
     std::sort(cuts.begin(), cuts.end());
-    const int degree = std::min(TrigSeries::kMaxDegree, forceDegree + getMaxDegree(weights) + harmonics);
-    std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
-    TrigSeries::Angles a0(cuts[0], degree);
+    std::vector<ForcePiece> pieces;
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double t0 = cuts[i], t1 = cuts[i + 1];
-        if (t1 - t0 <= 0) continue;
-        if (a0.tau != t0) a0 = TrigSeries::Angles(t0, degree);
-        const TrigSeries::Angles a1(t1, degree);
-        addPiece(lawOn(0.5 * (t0 + t1)), a0, a1, harmonics, weights, out);
-        a0 = a1;
+        if (cuts[i + 1] - cuts[i] <= 0) continue;
+        ForcePiece p{cuts[i], cuts[i + 1]};
+        lawAt(0.5 * (cuts[i] + cuts[i + 1]), p);
+        pieces.push_back(p);
     }
-    return out;
-}
-
-std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, int harmonics,
-                                        const std::vector<TrigSeries>& weights) {
-    std::vector<TrigSeries> out(weights.size(), TrigSeries(harmonics));
-    int forceDegree = 0;
-    for (const ForcePiece& p : pieces) forceDegree = std::max(forceDegree, p.force.getDegree());
-    const int degree = std::min(TrigSeries::kMaxDegree, forceDegree + getMaxDegree(weights) + harmonics);
-    std::optional<TrigSeries::Angles> a0;
-    for (const ForcePiece& p : pieces) {
-        if (p.t1 - p.t0 <= 0) continue;
-        if (!a0 || a0->tau != p.t0) a0.emplace(p.t0, degree);
-        const TrigSeries::Angles a1(p.t1, degree);
-        addPiece(p.force, *a0, a1, harmonics, weights, out);
-        a0 = a1;
-    }
-    return out;
+    return pieces;
 }
 
 TrigSeries integrateNumerically(int harmonics, int n, const std::function<double(double)>& f) {
@@ -98,18 +105,20 @@ std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const 
     std::vector<double> cuts;
     for (double b : law.breakpoints)
         for (double r : d.findRoots(b)) cuts.push_back(r);
-    const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(cuts, harmonics, weights, d.getDegree(), [&](double mid) {
+    const std::vector<ForcePiece> pieces = makePieces(cuts, [&](double mid, ForcePiece& p) {
         const int i = findSegment(law.breakpoints, d.evaluate(mid));
-        return TrigSeries::constant(law.alpha[i]) + d * law.beta[i] + rate * law.viscous;
+        p.constant = law.alpha[i], p.slope = law.beta[i];
     });
+    const TrigSeries viscous = d.derivative() * (omega * law.viscous);
+    return integratePieces(pieces, d, law.viscous != 0 ? &viscous : nullptr, weights, harmonics);
 }
 
 std::vector<TrigSeries> calcForceHarmonics(const CoulombLaw& law, const TrigSeries& d, double omega,
                                            const std::vector<TrigSeries>& weights, int harmonics) {
     const TrigSeries rate = d.derivative() * omega;
-    return integratePiecewise(rate.findRoots(0), harmonics, weights, 0,
-                              [&](double mid) { return TrigSeries::constant(law.evaluate(rate.evaluate(mid))); });
+    const std::vector<ForcePiece> pieces = makePieces(
+        rate.findRoots(0), [&](double mid, ForcePiece& p) { p.constant = law.evaluate(rate.evaluate(mid)); });
+    return integratePieces(pieces, d, nullptr, weights, harmonics);
 }
 
 TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,
@@ -140,70 +149,64 @@ TrigSeries calcForceHarmonicsNumerically(const CoulombLaw& law, const TrigSeries
 std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d) {
     const double k = law.stiffness, Fc = law.limit;
     const std::vector<double> turning = d.derivative().findRoots(0);
-    if (turning.size() < 2) return {{0, 2 * std::numbers::pi, TrigSeries::constant(0)}};
+    if (turning.size() < 2) return {{0, 2 * std::numbers::pi, 0.0, 0.0}};
+    std::vector<double> dTurning;  // d at each turning point
+    for (double t : turning) dTurning.push_back(d.evaluate(t));
     size_t iMax = 0, iMin = 0;
     for (size_t i = 0; i < turning.size(); ++i) {
-        if (d.evaluate(turning[i]) > d.evaluate(turning[iMax])) iMax = i;
-        if (d.evaluate(turning[i]) < d.evaluate(turning[iMin])) iMin = i;
+        if (dTurning[i] > dTurning[iMax]) iMax = i;
+        if (dTurning[i] < dTurning[iMin]) iMin = i;
     }
-    const double dMax = d.evaluate(turning[iMax]), dMin = d.evaluate(turning[iMin]);
+    const double dMax = dTurning[iMax], dMin = dTurning[iMin];
     if (dMax - dMin <= 2 * Fc / k)  // sticks all period, about mid-range
-        return {{0, 2 * std::numbers::pi, TrigSeries::constant(k * 0.5 * (dMax + dMin)) + d * -k}};
+        return {{0, 2 * std::numbers::pi, k * 0.5 * (dMax + dMin), -k}};
 
-    std::vector<double> t;  // turning points from the global maximum, unwrapped
-    for (size_t i = 0; i < turning.size(); ++i) {
-        const double ti = turning[(iMax + i) % turning.size()];
-        t.push_back(ti < turning[iMax] ? ti + 2 * std::numbers::pi : ti);
+    std::vector<double> t, dt;  // turning points from the global maximum, unwrapped, and d there
+    for (size_t i = 0; i <= turning.size(); ++i) {
+        const size_t m = (iMax + i) % turning.size();
+        t.push_back(turning[m] < turning[iMax] || i == turning.size() ? turning[m] + 2 * std::numbers::pi : turning[m]);
+        dt.push_back(dTurning[m]);
     }
-    t.push_back(turning[iMax] + 2 * std::numbers::pi);
     std::vector<ForcePiece> pieces;
     double fr = -Fc, dr = dMax;
     for (size_t i = 0; i + 1 < t.size(); ++i) {
         const double ta = t[i], tb = t[i + 1];
-        const bool down = d.evaluate(0.5 * (ta + tb)) < dr;
+        const bool down = dt[i + 1] < dr;  // d is monotone from ta to tb
         const double fLimit = down ? Fc : -Fc;
         const double dSlip = dr + (fr - fLimit) / k;  // where f_r − k(d − d_r) = f_limit
-        const TrigSeries stick = TrigSeries::constant(fr + k * dr) + d * -k;
-        // d is monotone between turning points, so the slip point (if any) is
-        // the single crossing of d = dSlip in (ta, tb): bisection finds it exactly.
+        // d is monotone between turning points, so the slip point (if any) is the
+        // single crossing of d = dSlip in (ta, tb).
         double tSlip = tb;
-        const double side0 = d.evaluate(ta) - dSlip, side1 = d.evaluate(tb) - dSlip;
-        if (side0 * side1 < 0) {
-            double lo = ta, hi = tb;
-            for (int it = 0; it < 60; ++it) {
-                const double mid = 0.5 * (lo + hi);
-                // Once mid is lo or hi (adjacent doubles), every further step reassigns
-                // the same value: stopping changes nothing.
-                if (mid == lo || mid == hi) break;
-                ((d.evaluate(mid) - dSlip) * side0 > 0 ? lo : hi) = mid;
-            }
-            tSlip = 0.5 * (lo + hi);
-        }
-        pieces.push_back({ta, tSlip, stick});
+        if ((dt[i] - dSlip) * (dt[i + 1] - dSlip) < 0) tSlip = d.findCrossing(dSlip, ta, tb);
+        pieces.push_back({ta, tSlip, fr + k * dr, -k});  // sticks: f_r − k(d − d_r)
         if (tSlip < tb) {
-            pieces.push_back({tSlip, tb, TrigSeries::constant(fLimit)});
+            pieces.push_back({tSlip, tb, fLimit, 0.0});
             fr = fLimit;
         } else {
-            fr = std::clamp(fr - k * (d.evaluate(tb) - dr), -Fc, Fc);
+            fr = std::clamp(fr - k * (dt[i + 1] - dr), -Fc, Fc);
         }
-        dr = d.evaluate(tb);
+        dr = dt[i + 1];
     }
     return pieces;
 }
 
-double evaluateHistory(const std::vector<ForcePiece>& pieces, double tau) {
+double evaluateHistory(const std::vector<ForcePiece>& pieces, const TrigSeries& d, double tau) {
     const double start = pieces.front().t0;
     double t = std::fmod(tau - start, 2 * std::numbers::pi);
     if (t < 0) t += 2 * std::numbers::pi;
     t += start;
+    const ForcePiece* at = &pieces.back();
     for (const ForcePiece& p : pieces)
-        if (t >= p.t0 && t <= p.t1) return p.force.evaluate(t);
-    return pieces.back().force.evaluate(t);
+        if (t >= p.t0 && t <= p.t1) {
+            at = &p;
+            break;
+        }
+    return at->constant + at->slope * d.evaluate(t);
 }
 
 std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const TrigSeries& d, double,
                                            const std::vector<TrigSeries>& weights, int harmonics) {
-    return integratePieces(calcElastoPlasticHistory(law, d), harmonics, weights);
+    return integratePieces(calcElastoPlasticHistory(law, d), d, nullptr, weights, harmonics);
 }
 
 TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,

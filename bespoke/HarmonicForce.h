@@ -40,13 +40,15 @@ struct ElastoPlasticLaw {
     double stiffness = 0;  ///< k_b
 };
 
-/// One piece of a piecewise force history: f(τ) = series on [t0, t1] (t may exceed 2π).
+/// One piece of a piecewise force history of the displacement d: f(τ) = constant +
+/// slope·d(τ) on [t0, t1] (t may exceed 2π).
 struct ForcePiece {
     double t0 = 0, t1 = 0;
-    TrigSeries force;
+    double constant = 0, slope = 0;
 };
 std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d);
-double evaluateHistory(const std::vector<ForcePiece>& pieces, double tau);
+/// f(τ) of a history of d (the pieces cover one period from pieces.front().t0).
+double evaluateHistory(const std::vector<ForcePiece>& pieces, const TrigSeries& d, double tau);
 
 /// Fourier coefficients up to `harmonics` of f(d(τ), ω·d'(τ))·w(τ), exact.
 TrigSeries calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega, const TrigSeries& w,

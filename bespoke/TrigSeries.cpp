@@ -1,9 +1,8 @@
 #include "bespoke/TrigSeries.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <complex>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -40,7 +39,21 @@ void TrigSeries::grow(int degree) {
 
 TrigSeries::Angles::Angles(double t, int n) : tau(t), degree(std::min(n, kMaxDegree)) {
     sin[0] = 0, cos[0] = 1;
-    for (int k = 1; k <= degree; ++k) sin[k] = std::sin(k * t), cos[k] = std::cos(k * t);
+    if (degree == 0) return;
+    sin[1] = std::sin(t), cos[1] = std::cos(t);
+    for (int k = 2; k <= degree; ++k) {  // sin(a + t), cos(a + t) with a = (k − 1)τ
+        sin[k] = sin[k - 1] * cos[1] + cos[k - 1] * sin[1];
+        cos[k] = cos[k - 1] * cos[1] - sin[k - 1] * sin[1];
+    }
+}
+
+void TrigSeries::Moments::add(const Angles& a0, const Angles& a1, double weight) {
+    if (std::min(a0.degree, a1.degree) < degree) throw std::logic_error("TrigSeries::Moments: angles of too low a degree");
+    cos[0] += weight * (a1.tau - a0.tau);
+    for (int n = 1; n <= degree; ++n) {
+        cos[n] += weight * (a1.sin[n] - a0.sin[n]) / n;   // ∫ cos nτ = sin nτ / n
+        sin[n] -= weight * (a1.cos[n] - a0.cos[n]) / n;   // ∫ sin nτ = −cos nτ / n
+    }
 }
 
 double& TrigSeries::updCos(int k) {
@@ -51,12 +64,6 @@ double& TrigSeries::updCos(int k) {
 double& TrigSeries::updSin(int k) {
     grow(k);
     return c_[2 * k];
-}
-
-double TrigSeries::evaluate(double tau) const {
-    double v = c_[0];
-    for (int k = 1; k <= getDegree(); ++k) v += c_[2 * k - 1] * std::cos(k * tau) + c_[2 * k] * std::sin(k * tau);
-    return v;
 }
 
 double TrigSeries::evaluate(const Angles& a) const {
@@ -75,19 +82,34 @@ TrigSeries TrigSeries::derivative() const {
     return d;
 }
 
-double TrigSeries::integrate(double t0, double t1) const {
-    double v = c_[0] * (t1 - t0);
-    for (int k = 1; k <= getDegree(); ++k)
-        v += (c_[2 * k - 1] * (std::sin(k * t1) - std::sin(k * t0)) -
-              c_[2 * k] * (std::cos(k * t1) - std::cos(k * t0))) / k;
+double TrigSeries::integrate(const Angles& a0, const Angles& a1) const {
+    if (getDegree() > std::min(a0.degree, a1.degree)) throw std::logic_error("TrigSeries::integrate: angles of too low a degree");
+    Moments m(getDegree());
+    m.add(a0, a1, 1);
+    return integrate(m);
+}
+
+double TrigSeries::integrate(const Moments& m) const {
+    if (getDegree() > m.degree) throw std::logic_error("TrigSeries::integrate: moments of too low a degree");
+    double v = c_[0] * m.cos[0];
+    for (int k = 1; k <= getDegree(); ++k) v += c_[2 * k - 1] * m.cos[k] + c_[2 * k] * m.sin[k];
     return v;
 }
 
-double TrigSeries::integrate(const Angles& a0, const Angles& a1) const {
-    if (getDegree() > std::min(a0.degree, a1.degree)) throw std::logic_error("TrigSeries::integrate: angles of too low a degree");
-    double v = c_[0] * (a1.tau - a0.tau);
-    for (int k = 1; k <= getDegree(); ++k)
-        v += (c_[2 * k - 1] * (a1.sin[k] - a0.sin[k]) - c_[2 * k] * (a1.cos[k] - a0.cos[k])) / k;
+double TrigSeries::integrateTimesHarmonic(const Moments& m, int k, bool sine) const {
+    if (k < 1 || getDegree() + k > m.degree)
+        throw std::logic_error("TrigSeries::integrateTimesHarmonic: moments of too low a degree");
+    // ∫ cos nτ·cos kτ = ½[C(n−k) + C(n+k)],  ∫ sin nτ·cos kτ = ½[S(n+k) + S(n−k)],
+    // ∫ cos nτ·sin kτ = ½[S(n+k) − S(n−k)],  ∫ sin nτ·sin kτ = ½[C(n−k) − C(n+k)],
+    // with C(−j) = C(j), S(−j) = −S(j) the moments (operator*'s identities).
+    auto C = [&m](int j) { return m.cos[std::abs(j)]; };
+    auto S = [&m](int j) { return j < 0 ? -m.sin[-j] : m.sin[j]; };
+    double v = c_[0] * (sine ? S(k) : C(k));
+    for (int n = 1; n <= getDegree(); ++n) {
+        const double a = c_[2 * n - 1], b = c_[2 * n];
+        if (!sine) v += 0.5 * (a * (C(n - k) + C(n + k)) + b * (S(n + k) + S(n - k)));
+        else v += 0.5 * (a * (S(n + k) - S(n - k)) + b * (C(n - k) - C(n + k)));
+    }
     return v;
 }
 
@@ -123,79 +145,62 @@ TrigSeries operator*(const TrigSeries& a, const TrigSeries& b) {
     return p;
 }
 
-TrigSeries TrigSeries::timesHarmonic(int k, bool sine) const {
-    // operator*(*this, cosine(k)) has b_c = 1, b_s = 0 at n = k and zeros elsewhere
-    // (sine(k): b_c = 0, b_s = 1); the terms of the other n add only zeros.
-    TrigSeries p(getDegree() + k);
-    auto addCos = [&p](int j, double v) { (j == 0 ? p.c_[0] : p.c_[2 * std::abs(j) - 1]) += v; };
-    auto addSin = [&p](int j, double v) {
-        if (j != 0) p.c_[2 * std::abs(j)] += (j > 0 ? v : -v);
-    };
-    for (int m = 0; m <= getDegree(); ++m) {
-        const double ac = m == 0 ? c_[0] : c_[2 * m - 1], as = m == 0 ? 0.0 : c_[2 * m];
-        if (!sine) {
-            addCos(m - k, 0.5 * ac);
-            addCos(m + k, 0.5 * ac);
-            addSin(m + k, 0.5 * as);
-            addSin(m - k, 0.5 * as);
-        } else {
-            addCos(m - k, 0.5 * as);
-            addCos(m + k, 0.5 * -as);
-            addSin(m + k, 0.5 * ac);
-            addSin(m - k, 0.5 * -ac);
-        }
-    }
-    return p;
-}
-
 std::vector<double> TrigSeries::findRoots(double level) const {
-    // s(τ) − level = Σ_{k=−N..N} γ_k e^{ikτ}, γ₀ = c₀ − level, γ_{±k} = (a_k ∓ i b_k)/2.
-    // With z = e^{iτ}, z^N·(s − level) is a polynomial of degree 2N whose roots
-    // on the unit circle are the crossings; its companion matrix gives them all.
     double scale = std::abs(c_[0] - level);
     for (int i = 1; i < size_; ++i) scale = std::max(scale, std::abs(c_[i]));
     if (scale == 0) return {};
-    // Out of reach: |s(τ) − c₀| ≤ Σ|(a_k, b_k)| for every τ, so when c₀ − level exceeds
-    // that by more than the acceptance test below (1e-8·scale) plus the rounding of an
-    // evaluation (bounded by 1e-12 of the coefficients' sum), every candidate the
-    // eigenvalues could give is rejected there: the answer is {} without solving.
+    // Out of reach: |s(τ) − c₀| ≤ Σ|(a_k, b_k)| for every τ, so when |c₀ − level| exceeds
+    // that by more than the rounding of an evaluation (bounded by 1e-12 of the
+    // coefficients' sum) nothing crosses: the answer is {} without a search.
     double reach = 0, sum = std::abs(c_[0]) + std::abs(level);
     for (int k = 1; k <= getDegree(); ++k)
         reach += std::hypot(c_[2 * k - 1], c_[2 * k]), sum += std::abs(c_[2 * k - 1]) + std::abs(c_[2 * k]);
-    if (std::abs(c_[0] - level) - reach > 1e-8 * scale + 1e-12 * sum) return {};
+    if (std::abs(c_[0] - level) - reach > 1e-12 * sum) return {};
     int N = getDegree();
     while (N > 0 && std::hypot(c_[2 * N - 1], c_[2 * N]) < 1e-14 * scale) --N;
-    if (N == 0) return {};
-    using C = std::complex<double>;
-    std::array<C, 2 * kMaxDegree + 1> p{};  // p[j] multiplies z^j
-    p[N] = c_[0] - level;
-    for (int k = 1; k <= N; ++k) {
-        p[N + k] = C(c_[2 * k - 1], -c_[2 * k]) / 2.0;
-        p[N - k] = C(c_[2 * k - 1], c_[2 * k]) / 2.0;
-    }
-    const int deg = 2 * N;
-    // Fixed maximum size: the eigen-solve allocates nothing.
-    using Companion = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic, 0, 2 * kMaxDegree, 2 * kMaxDegree>;
-    Companion companion = Companion::Zero(deg, deg);
-    for (int i = 1; i < deg; ++i) companion(i, i - 1) = 1;
-    for (int i = 0; i < deg; ++i) companion(i, deg - 1) = -p[i] / p[deg];
-    const auto z = Eigen::ComplexEigenSolver<Companion>(companion, false).eigenvalues();
-
+    if (N == 0) return {};  // a constant within rounding
+    // On [c − r, c + r], Taylor's theorem with |s''| ≤ M2 = Σ k²·|(a_k, b_k)|:
+    //   |s(τ) − s(c) − s'(c)(τ − c)| ≤ M2 r²/2  and  |s'(τ) − s'(c)| ≤ M2 r.
+    // So no crossing when |s(c) − level| > |s'(c)| r + M2 r²/2, and s is monotone (one
+    // crossing at most, there when the ends differ in sign) when |s'(c)| > M2 r. Otherwise
+    // the interval is halved, down to a half-width of 1e-10 (a tangency within rounding).
+    // Both tests carry a margin for the rounding of an evaluation, as the reach test does.
+    double m2 = 0, slopeSum = 0;
+    for (int k = 1; k <= getDegree(); ++k)
+        m2 += k * k * std::hypot(c_[2 * k - 1], c_[2 * k]), slopeSum += k * (std::abs(c_[2 * k - 1]) + std::abs(c_[2 * k]));
+    const double valueMargin = 1e-12 * sum, slopeMargin = 1e-12 * slopeSum;
+    constexpr double kMinHalfWidth = 1e-10;
     const TrigSeries ds = derivative();
+    struct Interval {
+        double a, b, va, vb;
+    };
+    std::array<Interval, 128> stack;  // depth ≤ log2(π / kMinHalfWidth) ≈ 35 below the first grid
+    int top = 0;
+    const int grid = 4 * N;
+    std::array<double, 4 * kMaxDegree + 1> gridValues;
+    for (int i = 0; i < grid; ++i) gridValues[i] = evaluate(kTwoPi * i / grid) - level;
+    gridValues[grid] = gridValues[0];  // s(2π) = s(0): one period
+    for (int i = grid - 1; i >= 0; --i)  // the first interval on top
+        stack[top++] = {kTwoPi * i / grid, kTwoPi * (i + 1) / grid, gridValues[i], gridValues[i + 1]};
     std::vector<double> roots;
-    for (int i = 0; i < deg; ++i) {
-        if (std::abs(std::abs(z[i]) - 1) > 1e-3) continue;
-        double tau = std::arg(z[i]);
-        for (int it = 0; it < 4; ++it) {  // polish on the real line (one set of angles per τ)
-            const Angles a(tau, getDegree());
-            const double slope = ds.evaluate(a);
-            if (slope == 0) break;
-            tau -= (evaluate(a) - level) / slope;
+    while (top > 0) {
+        const Interval iv = stack[--top];
+        const double c = 0.5 * (iv.a + iv.b), r = 0.5 * (iv.b - iv.a);
+        const Angles angles(c, getDegree());
+        const double v = evaluate(angles) - level, slope = ds.evaluate(angles);
+        if (std::abs(v) > std::abs(slope) * r + 0.5 * m2 * r * r + valueMargin) continue;
+        const bool monotone = std::abs(slope) > m2 * r + slopeMargin;
+        if (monotone || r < kMinHalfWidth || top + 2 > int(stack.size())) {
+            if (iv.va == 0) roots.push_back(iv.a);  // a crossing at b is the next interval's a
+            else if ((iv.va < 0) != (iv.vb < 0) && iv.vb != 0) roots.push_back(findCrossing(level, iv.a, iv.b, iv.va, ds));
+            continue;
         }
-        if (std::abs(evaluate(tau) - level) > 1e-8 * scale) continue;
+        stack[top++] = {c, iv.b, v, iv.vb};
+        stack[top++] = {iv.a, c, iv.va, v};
+    }
+    for (double& tau : roots) {
         tau = std::fmod(tau, kTwoPi);
         if (tau < 0) tau += kTwoPi;
-        roots.push_back(tau);
     }
     std::sort(roots.begin(), roots.end());
     std::vector<double> unique;
@@ -203,6 +208,28 @@ std::vector<double> TrigSeries::findRoots(double level) const {
         if (unique.empty() || r - unique.back() > 1e-10) unique.push_back(r);
     if (unique.size() > 1 && unique.front() + kTwoPi - unique.back() < 1e-10) unique.pop_back();
     return unique;
+}
+
+double TrigSeries::findCrossing(double level, double lo, double hi) const {
+    return findCrossing(level, lo, hi, evaluate(lo) - level, derivative());
+}
+
+double TrigSeries::findCrossing(double level, double lo, double hi, double vLo, const TrigSeries& ds) const {
+    // Newton from the middle; a step that leaves the bracket is replaced by bisection.
+    // It ends when a step moves τ by less than the rounding of τ itself.
+    const bool negativeAtLo = vLo < 0;
+    double t = 0.5 * (lo + hi);
+    for (int it = 0; it < 100; ++it) {
+        const Angles a(t, getDegree());
+        const double v = evaluate(a) - level, slope = ds.evaluate(a);
+        if (v == 0) return t;
+        ((v < 0) == negativeAtLo ? lo : hi) = t;
+        double next = slope != 0 ? t - v / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t))) return next;
+        t = next;
+    }
+    return t;
 }
 
 }  // namespace rockroll
