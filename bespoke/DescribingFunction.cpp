@@ -611,8 +611,10 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
     auto jacobianOf = [this](const Eigen::VectorXd& u) {  // calcJacobian(residualOf, u, n), faster
         return calcResidualJacobian(u.head(kNumUnknowns), u[kNumUnknowns], true);
     };
-    auto tangentAt = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& previous) {
-        const Eigen::MatrixXd J = jacobianOf(u);
+    // The tangent at u; J receives ∂R/∂u there, the corrector's first Jacobian on the
+    // next step (Powell's rank-one updates carry it from u to the predicted point).
+    auto tangentAt = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& previous, Eigen::MatrixXd& J) {
+        J = jacobianOf(u);
         Eigen::MatrixXd A(n + 1, n + 1);
         A.topRows(n) = J;
         A.row(n) = previous.transpose();
@@ -625,12 +627,14 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
 
     // One direction of the continuation from u along t: the points after u, up to and
     // including the first one outside the range; `closed` when it comes back to `origin`.
-    auto continueFrom = [&](Eigen::VectorXd u, Eigen::VectorXd t, const Eigen::VectorXd& origin, bool& closed) {
+    auto continueFrom = [&](Eigen::VectorXd u, Eigen::VectorXd t, Eigen::MatrixXd Ju, const Eigen::VectorXd& origin,
+                            bool& closed) {
         std::vector<Eigen::VectorXd> out;
         double ds = s.initialStep, travelled = 0;
         while (int(out.size()) < s.maxPoints) {
             const Eigen::VectorXd predicted = u + ds * t;
             int evaluations = 0;
+            bool first = true;
             const auto corrected = solvePowell(
                 [&](const Eigen::VectorXd& v) {
                     Eigen::VectorXd r(n + 1);
@@ -640,7 +644,8 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
                 },
                 predicted, 1e-7, &evaluations, [&](const Eigen::VectorXd& v) {
                     Eigen::MatrixXd J(n + 1, n + 1);
-                    J.topRows(n) = jacobianOf(v);
+                    J.topRows(n) = first ? Ju : jacobianOf(v);  // first: at u, not at v = predicted
+                    first = false;
                     const double c0 = t.dot(v - predicted);
                     for (int i = 0; i <= n; ++i) {  // the arclength row by the same differences
                         Eigen::VectorXd vp = v;
@@ -657,7 +662,7 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
             }
             travelled += (*corrected - u).norm();
             u = *corrected;
-            t = tangentAt(u, t);
+            t = tangentAt(u, t, Ju);
             out.push_back(u);
             if (outside(u[n])) break;
             // Back at the start after going round: a closed curve of solutions (an isola).
@@ -682,13 +687,14 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         path.start = std::move(start);
         path.startMph = speedMph;
         std::vector<Eigen::VectorXd> us{u0};
-        const Eigen::VectorXd t0 = tangentAt(u0, direction < 0 ? Eigen::VectorXd(-e) : e);
+        Eigen::MatrixXd J0;
+        const Eigen::VectorXd t0 = tangentAt(u0, direction < 0 ? Eigen::VectorXd(-e) : e, J0);
         bool closed = false;
-        const std::vector<Eigen::VectorXd> ahead = continueFrom(u0, t0, u0, closed);
+        const std::vector<Eigen::VectorXd> ahead = continueFrom(u0, t0, J0, u0, closed);
         us.insert(us.end(), ahead.begin(), ahead.end());
         if (direction == 0 && !closed) {
             bool unused = false;
-            std::vector<Eigen::VectorXd> behind = continueFrom(u0, -t0, u0, unused);
+            std::vector<Eigen::VectorXd> behind = continueFrom(u0, -t0, J0, u0, unused);
             us.insert(us.begin(), behind.rbegin(), behind.rend());
         }
         path.closed = closed;
