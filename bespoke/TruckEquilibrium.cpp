@@ -700,6 +700,24 @@ double calcChoiceBound(const TruckGeometry& g, const TruckInputs& in, const Truc
 }
 
 namespace {
+/// The search order's neighbour part: every mode that differs from `previous` in one
+/// choice, then, for each of those in turn, every mode that differs from it in one
+/// choice (but `previous` itself). Stops when consider(mode) returns true; returns
+/// whether it did.
+template <class Consider>
+bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
+    std::array<TruckMode, kMaxNeighbours> first, second;
+    const int nFirst = fillNeighbourModes(previous, first);
+    for (int i = 0; i < nFirst; ++i)
+        if (consider(first[i])) return true;
+    for (int i = 0; i < nFirst; ++i) {
+        const int nSecond = fillNeighbourModes(first[i], second);
+        for (int j = 0; j < nSecond; ++j)
+            if (!(second[j] == previous) && consider(second[j])) return true;
+    }
+    return false;
+}
+
 /// The search order's first consistent mode, or false when no mode is consistent.
 /// Every mode of the order (the previous mode, its one-choice neighbours, their
 /// one-choice neighbours, every mode) is either consistent or not whatever came
@@ -730,15 +748,7 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
         found = context.solve(m);
         return true;
     };
-    std::array<TruckMode, kMaxNeighbours> first, second;
-    const int nFirst = fillNeighbourModes(previous, first);
-    for (int i = 0; i < nFirst; ++i)
-        if (consider(first[i])) return true;
-    for (int i = 0; i < nFirst; ++i) {
-        const int nSecond = fillNeighbourModes(first[i], second);
-        for (int j = 0; j < nSecond; ++j)
-            if (consider(second[j])) return true;
-    }
+    if (visitNeighbours(previous, consider)) return true;
     ++n.enumerations;
     // enumerateTruckModes' order, with the bound's factors tested first.
     std::array<std::array<std::array<bool, 3>, 3>, 2> sideOk{};
@@ -810,15 +820,7 @@ TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previ
         if (s.consistent || s.violation < best.violation) best = s;
         return s.consistent;
     };
-    std::array<TruckMode, kMaxNeighbours> first, second;
-    const int nFirst = fillNeighbourModes(previous, first);
-    for (int i = 0; i < nFirst; ++i)
-        if (consider(first[i])) return best;
-    for (int i = 0; i < nFirst; ++i) {
-        const int nSecond = fillNeighbourModes(first[i], second);
-        for (int j = 0; j < nSecond; ++j)
-            if (!(second[j] == previous) && consider(second[j])) return best;
-    }
+    if (visitNeighbours(previous, consider)) return best;
     if (!prune) ++n.enumerations;  // the pruned search counted it in findFirstConsistent
     static const std::vector<TruckMode> modes = enumerateTruckModes();
     for (const TruckMode& m : modes)
