@@ -275,7 +275,7 @@ TEST(ReducedModel, CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve) {
     const auto modes = enumerateTruckModes();
     long shared = 0;
     for (const TruckMode& mode : modes) shared += TruckModeCache::getMatrixClass(mode) == mode ? 0 : 1;
-    EXPECT_GT(shared, long(modes.size()) / 2);  // most modes share another's matrix
+    EXPECT_EQ(long(modes.size()) - shared, 8 * 3 * 9 * 2 * 2 * 2 * 2);  // stick or slip ×3, gibs open or in contact
     int consistent = 0;
     for (double roll : {0.0, 0.02, -0.05}) {
         auto y = m.makeStaticState();
