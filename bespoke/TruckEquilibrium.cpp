@@ -19,6 +19,12 @@ namespace rockroll {
 
 namespace {
 enum Unknown { ZB, TB, ZW, TW, FCL, FCR, FSL, FSR, WL, WR, PHIL, PHIR, YB, FH, PHIH, N };
+/// The quantities the consistency checks read (left, right where paired): each a row
+/// of the unknowns plus a constant (Kinematics).
+enum CheckedQuantity {
+    kRimForce = 0, kSideBearingForce = 2, kWheelForce = 4, kWedgeFriction = 6, kLateralFriction = 8,
+    kRimGap = 9, kPadGap = 11, kTreadLift = 13, kCompression = 15, kLateral = 17, kCheckedCount = 18
+};
 using Row = Eigen::Matrix<double, 1, N>;
 
 /// A quantity linear in the unknowns: row·x + c.
@@ -228,6 +234,10 @@ struct ModeFactor {
     std::array<int, N> p{}, q{};                      ///< its row and column permutations
     Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
     bool invertible = false;
+    /// The screen's rows: each checked quantity (CheckedQuantity) is checkRows·b plus
+    /// its Kinematics constant, checkRows = G·A⁻¹ with G the quantities' rows in the
+    /// unknowns. Only for invertible matrices.
+    Eigen::Matrix<double, kCheckedCount, N, Eigen::RowMajor> checkRows;
 
     /// The nonzero off-diagonal entries of L and of U, row by row (about 40 of L's 105
     /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]).
@@ -345,64 +355,101 @@ Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix
     return getColumnScale().asDiagonal() * (substitution == TruckSubstitution::Sparse ? f.solve(bs) : f.solveDense(bs));
 }
 
-/// Every inequality of a mode at its solution x, as need(value, minimum, unit) for
-/// "value ≥ minimum", whose violation is (minimum − value)/unit (forces in units of
-/// 10 kN, lengths in units of 0.1 mm). need returns false to stop early. The one
-/// definition of the checks: solveFactored takes the largest violation, isConsistent
-/// stops at the first one above kConsistentViolation. The forces come first: they are
-/// unknowns themselves, and most modes that fail fail on one.
-template <class Need>
-void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                       const Eigen::Matrix<double, N, 1>& x, Need&& need) {
+/// A quantity a check reads, and a bound on its absolute error: 0 from a solve (the
+/// value the checks decide on), the screen's bound from its sums (ScreenValues).
+struct Checked {
+    double value = 0, error = 0;
+};
+
+/// Every inequality of a mode, as need(value, minimum, unit) for "value ≥ minimum",
+/// whose violation is (minimum − value)/unit (forces in units of 10 kN, lengths in
+/// units of 0.1 mm), on the quantities v(f) gives (SolvedValues: from the mode's
+/// solution x). need returns false to stop early. The one definition of the checks:
+/// solveFactored takes the largest violation, isConsistent stops at the first one above
+/// kConsistentViolation, the screen at the first one certainly above it. The forces
+/// come first: they are unknowns themselves, and most modes that fail fail on one.
+template <class Values, class Need>
+void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, Values&& v, Need&& need) {
+    const Checked zero{};
+    auto exact = [](double value) { return Checked{value, 0}; };
     for (int i : {0, 1})
-        if (!need(x[FCL + i], 0, 1e4) || !need(x[FSL + i], 0, 1e4) || !need(x[WL + i], 0, 1e4)) return;
-    for (int i : {0, 1}) {
-        if (!need(k.rimGap[i].evaluate(x), 0, 1e-4) || !need(k.padGap[i].evaluate(x), 0, 1e-4) ||
-            !need(k.treadLift[i].evaluate(x), 0, 1e-4))
+        if (!need(v(kRimForce + i), zero, 1e4) || !need(v(kSideBearingForce + i), zero, 1e4) ||
+            !need(v(kWheelForce + i), zero, 1e4))
             return;
-        const double Z = k.compression[i].evaluate(x);
+    for (int i : {0, 1}) {
+        if (!need(v(kRimGap + i), zero, 1e-4) || !need(v(kPadGap + i), zero, 1e-4) ||
+            !need(v(kTreadLift + i), zero, 1e-4))
+            return;
+        const Checked Z = v(kCompression + i);
         switch (mode.spring[i]) {
         case SpringSegment::Free:
-            if (!need(0, Z, 1e-4)) return;
+            if (!need(zero, Z, 1e-4)) return;
             break;
         case SpringSegment::Linear:
-            if (!need(Z, 0, 1e-4) || !need(g.travel, Z, 1e-4)) return;
+            if (!need(Z, zero, 1e-4) || !need(exact(g.travel), Z, 1e-4)) return;
             break;
         case SpringSegment::Bottomed:
-            if (!need(Z, g.travel, 1e-4)) return;
+            if (!need(Z, exact(g.travel), 1e-4)) return;
             break;
         }
-        const double dZ = Z - in.compressionOld[i];
+        const Checked dZ{Z.value - in.compressionOld[i], Z.error + 1e-15 * std::abs(in.compressionOld[i])};
         switch (mode.wedge[i]) {
-        case WedgeState::Stick:
-            if (!need(g.Fv, std::abs(x[PHIL + i]), 1e4)) return;
+        case WedgeState::Stick: {
+            const Checked phi = v(kWedgeFriction + i);
+            if (!need(exact(g.Fv), Checked{std::abs(phi.value), phi.error}, 1e4)) return;
             break;
+        }
         case WedgeState::SlipUp:  // Z falling
-            if (!need(0, dZ, 1e-4)) return;
+            if (!need(zero, dZ, 1e-4)) return;
             break;
         case WedgeState::SlipDown:  // Z rising
-            if (!need(dZ, 0, 1e-4)) return;
+            if (!need(dZ, zero, 1e-4)) return;
             break;
         }
     }
-    const double Y = k.lateral.evaluate(x), dY = Y - in.lateralOld;
+    const Checked Y = v(kLateral);
+    const Checked dY{Y.value - in.lateralOld, Y.error + 1e-15 * std::abs(in.lateralOld)};
     switch (mode.gib) {
     case GibContact::Open:
-        if (!need(Y, -g.gibClearance, 1e-4) || !need(g.gibClearance, Y, 1e-4)) return;
+        if (!need(Y, exact(-g.gibClearance), 1e-4) || !need(exact(g.gibClearance), Y, 1e-4)) return;
         break;
     case GibContact::Positive:
-        if (!need(Y, g.gibClearance, 1e-4)) return;
+        if (!need(Y, exact(g.gibClearance), 1e-4)) return;
         break;
     case GibContact::Negative:
-        if (!need(-g.gibClearance, Y, 1e-4)) return;
+        if (!need(exact(-g.gibClearance), Y, 1e-4)) return;
         break;
     }
     switch (mode.lateralWedge) {
-    case WedgeState::Stick: need(2 * g.Fh, std::abs(x[PHIH]), 1e4); break;
-    case WedgeState::SlipUp: need(dY, 0, 1e-4); break;
-    case WedgeState::SlipDown: need(0, dY, 1e-4); break;
+    case WedgeState::Stick: {
+        const Checked phi = v(kLateralFriction);
+        need(exact(2 * g.Fh), Checked{std::abs(phi.value), phi.error}, 1e4);
+        break;
+    }
+    case WedgeState::SlipUp: need(dY, zero, 1e-4); break;
+    case WedgeState::SlipDown: need(zero, dY, 1e-4); break;
     }
 }
+
+/// The checked quantities from a mode's solution x.
+struct SolvedValues {
+    const Kinematics& k;
+    const Eigen::Matrix<double, N, 1>& x;
+    Checked operator()(int f) const {
+        switch (f) {
+        case kRimForce: case kRimForce + 1: return {x[FCL + f - kRimForce], 0};
+        case kSideBearingForce: case kSideBearingForce + 1: return {x[FSL + f - kSideBearingForce], 0};
+        case kWheelForce: case kWheelForce + 1: return {x[WL + f - kWheelForce], 0};
+        case kWedgeFriction: case kWedgeFriction + 1: return {x[PHIL + f - kWedgeFriction], 0};
+        case kLateralFriction: return {x[PHIH], 0};
+        case kRimGap: case kRimGap + 1: return {k.rimGap[f - kRimGap].evaluate(x), 0};
+        case kPadGap: case kPadGap + 1: return {k.padGap[f - kPadGap].evaluate(x), 0};
+        case kTreadLift: case kTreadLift + 1: return {k.treadLift[f - kTreadLift].evaluate(x), 0};
+        case kCompression: case kCompression + 1: return {k.compression[f - kCompression].evaluate(x), 0};
+        default: return {k.lateral.evaluate(x), 0};
+        }
+    }
+};
 
 /// Solves with the factorization and checks every inequality of the mode.
 TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
@@ -431,8 +478,8 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
                             ? in.lateralAnchor
                             : sol.lateral - sol.lateralFriction / (2 * g.kBristleLateral);
     double worst = 0;  // a NaN check leaves it as it is, as std::max does
-    checkInequalities(g, in, mode, k, x, [&worst](double value, double minimum, double unit) {
-        worst = std::max(worst, (minimum - value) / unit);
+    checkInequalities(g, in, mode, SolvedValues{k, x}, [&worst](Checked value, Checked minimum, double unit) {
+        worst = std::max(worst, (minimum.value - value.value) / unit);
         return true;
     });
     sol.violation = worst;
@@ -447,8 +494,8 @@ bool isConsistentFactored(const TruckGeometry& g, const TruckInputs& in, const T
     if (!f.invertible) return false;
     const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
     bool consistent = true;
-    checkInequalities(g, in, mode, k, x, [&consistent](double value, double minimum, double unit) {
-        if ((minimum - value) / unit > kConsistentViolation) consistent = false;  // NaN: no violation, as above
+    checkInequalities(g, in, mode, SolvedValues{k, x}, [&consistent](Checked value, Checked minimum, double unit) {
+        if ((minimum.value - value.value) / unit > kConsistentViolation) consistent = false;  // NaN: no violation
         return consistent;
     });
     return consistent;
@@ -567,12 +614,53 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     assembleSystem(geometry_, in, mode, k, P, A, b);
     auto made = std::make_unique<Factor>();
     factorSystem(A, *made);
+    if (made->invertible) {
+        Eigen::Matrix<double, N, N> inverse;
+        for (int r = 0; r < N; ++r)
+            inverse.col(r) = solveScaled(*made, Eigen::Matrix<double, N, 1>::Unit(r), TruckSubstitution::Dense);
+        Eigen::Matrix<double, kCheckedCount, N> G = Eigen::Matrix<double, kCheckedCount, N>::Zero();
+        for (int i : {0, 1}) {
+            G(kRimForce + i, FCL + i) = G(kSideBearingForce + i, FSL + i) = G(kWheelForce + i, WL + i) = 1;
+            G(kWedgeFriction + i, PHIL + i) = 1;
+            G.row(kRimGap + i) = k.rimGap[i].row, G.row(kPadGap + i) = k.padGap[i].row;
+            G.row(kTreadLift + i) = k.treadLift[i].row, G.row(kCompression + i) = k.compression[i].row;
+        }
+        G(kLateralFriction, PHIH) = 1;
+        G.row(kLateral) = k.lateral.row;
+        made->checkRows = G * inverse;
+    }
     Factor* expected = nullptr;
     if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
     return *expected;  // another thread stored the same factorization first
 }
 
 namespace {
+/// The checked quantities from the right-hand side b alone: checkRows·b plus the
+/// quantity's Kinematics constant c, with the error bound
+/// kScreenRelativeError·(|checkRows|·|b| + |c|) plus kScreenForceFloor (forces) or
+/// kScreenLengthFloor (lengths).
+struct ScreenValues {
+    const Kinematics& k;
+    const TruckModeCache::Factor& f;
+    const Eigen::Matrix<double, N, 1>& b;
+    const Eigen::Matrix<double, N, 1> size;  ///< |b|
+    Checked operator()(int q) const {
+        double c = 0;
+        if (q >= kRimGap) {
+            const int i = (q - kRimGap) % 2;
+            c = q < kPadGap ? k.rimGap[i].c
+                : q < kTreadLift ? k.padGap[i].c
+                : q < kCompression ? k.treadLift[i].c
+                : q < kLateral ? k.compression[i].c
+                               : k.lateral.c;
+        }
+        const auto row = f.checkRows.row(q);
+        return Checked{row.dot(b) + c,
+                       kScreenRelativeError * (row.cwiseAbs().dot(size) + std::abs(c)) +
+                           (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor)};
+    }
+};
+
 /// What every mode of one search shares: the kinematics and the three spring laws per side.
 struct SearchContext {
     const TruckGeometry& g;
@@ -590,6 +678,24 @@ struct SearchContext {
         Eigen::Matrix<double, N, 1> b;
         assembleRhs(g, in, mode, k, P, b);
         return solveFactored(g, in, mode, k, P, cache.getFactor(mode, in), b);
+    }
+    /// Whether the mode's checks fail beyond doubt: a violation above
+    /// kConsistentViolation by more than the screen's error bound on the quantities,
+    /// each computed as checkRows·b + c instead of from the solution. Then isConsistent
+    /// is false too; otherwise nothing is concluded.
+    bool isCertainlyInconsistent(const TruckMode& mode) const {
+        const TruckModeCache::Factor& f = cache.getFactor(mode, in);
+        if (!f.invertible) return true;
+        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+        Eigen::Matrix<double, N, 1> b;
+        assembleRhs(g, in, mode, k, P, b);
+        const ScreenValues value{k, f, b, b.cwiseAbs()};
+        bool certain = false;
+        checkInequalities(g, in, mode, value, [&certain](Checked v, Checked minimum, double unit) {
+            certain = (minimum.value - v.value - (minimum.error + v.error)) / unit > kConsistentViolation;
+            return !certain;
+        });
+        return certain;
     }
     bool isConsistent(const TruckMode& mode) const {
         const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
@@ -684,6 +790,27 @@ TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const
     return SearchContext(cache.getGeometry(), in, cache).solve(mode);
 }
 
+TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckMode& mode,
+                                             const TruckModeCache& cache) {
+    TruckCheckedQuantities out;
+    const SearchContext context(cache.getGeometry(), in, cache);
+    const TruckModeCache::Factor& f = cache.getFactor(mode, in);
+    if (!f.invertible) return out;
+    const std::array<Linear, 2> P{context.springs[0][int(mode.spring[0])], context.springs[1][int(mode.spring[1])]};
+    Eigen::Matrix<double, N, 1> b;
+    assembleRhs(context.g, in, mode, context.k, P, b);
+    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
+    const SolvedValues solved{context.k, x};
+    const ScreenValues screened{context.k, f, b, b.cwiseAbs()};
+    for (int q = 0; q < kCheckedCount; ++q) {
+        out.solved.push_back(solved(q).value);
+        const Checked s = screened(q);
+        out.screened.push_back(s.value);
+        out.screenError.push_back(s.error);
+    }
+    return out;
+}
+
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m) {
     std::array<TruckMode, kMaxNeighbours> a;
     const int n = fillNeighbourModes(m, a);
@@ -727,12 +854,14 @@ bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
 ///   - a mode whose choice bound exceeds kConsistentViolation (its violation is at
 ///     least the bound); in the enumeration the bound's three factors (each side's
 ///     spring and wedge, the gibs and lateral wedges) are tested before the mode is
-///     built, so a ruled-out combination costs one table look-up.
+///     built, so a ruled-out combination costs one table look-up;
+///   - with screen, a mode the screen finds certainly inconsistent
+///     (SearchContext::isCertainlyInconsistent: about a tenth of a solve's work).
 /// The first consistent mode it finds is the first consistent mode of the order: what
 /// the exhaustive search returns, bit for bit (test
 /// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
 bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bounds, const TruckMode& previous,
-                         TruckSearchCounts& n, TruckSolution& found) {
+                         bool screen, TruckSearchCounts& n, TruckSolution& found) {
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
     auto consider = [&](const TruckMode& m) {
@@ -741,6 +870,10 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
         seen.set(index);
         if (bounds.getBound(m) > kConsistentViolation) {
             ++n.skipped;
+            return false;
+        }
+        if (screen && context.isCertainlyInconsistent(m)) {
+            ++n.screened;
             return false;
         }
         ++n.solves;
@@ -802,10 +935,11 @@ TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previ
     TruckSolution best = context.solve(previous);
     if (best.consistent) return best;
     const ChoiceBounds bounds(cache.getGeometry(), in);
-    const bool prune = pruning == TruckSearchPruning::ChoiceBounds;
+    const bool prune = pruning != TruckSearchPruning::Exhaustive;
     if (prune) {
         TruckSolution found;
-        if (findFirstConsistent(context, bounds, previous, n, found)) return found;
+        if (findFirstConsistent(context, bounds, previous, pruning == TruckSearchPruning::Screened, n, found))
+            return found;
     }
     // No mode is consistent (or Exhaustive): the smallest violation, the first of
     // equals in the search order. A mode whose bound is at least best.violation

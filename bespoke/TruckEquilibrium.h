@@ -162,6 +162,15 @@ private:
 /// solveTruckMode with the cache's factorization (bit-identical).
 TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache);
 
+/// The quantities a mode's consistency checks read (rim, side-bearing and wheel forces,
+/// wedge frictions, lateral friction, rim and pad gaps, tread lifts, compressions, lateral
+/// deflection: 18), from the mode's solution and from the search's screen, with the
+/// screen's error bound. Empty when the mode's matrix is singular.
+struct TruckCheckedQuantities {
+    std::vector<double> solved, screened, screenError;
+};
+TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache);
+
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
 
@@ -170,14 +179,28 @@ struct TruckSearchCounts {
     long searches = 0;      ///< findTruckEquilibrium calls
     long solves = 0;        ///< modes solved
     long skipped = 0;       ///< modes ruled out by their choice bound, unsolved
+    long screened = 0;      ///< modes ruled out by the screen, unsolved
     long enumerations = 0;  ///< searches that reached the enumeration of every mode
 };
 
 /// ChoiceBounds: skip the solve of a mode whose spring/wedge or gib/lateral-wedge
 /// choices alone bound its violation from below by at least the best violation
 /// found so far (calcChoiceBound); the answer is the same, bit for bit.
+/// Screened: ChoiceBounds, and, while looking for the first consistent mode, skip the
+/// solve of a mode whose checks the screen finds violated beyond its error bound
+/// (each checked quantity as one row times the right-hand side, TruckModeCache);
+/// the answer is the same, bit for bit.
 /// Exhaustive: solve every mode the search reaches (for checking).
-enum class TruckSearchPruning { ChoiceBounds, Exhaustive };
+enum class TruckSearchPruning { Screened, ChoiceBounds, Exhaustive };
+
+/// The screen's error bound on a checked quantity q = h·b + c:
+/// kScreenRelativeError·(|h|·|b| + |c|) (the size of its terms), plus a floor for the
+/// solve's own rounding, which reaches forces whose terms are all small (an open
+/// contact's force, solved as ~1e-8 N where the system carries 1e5 N): kScreenForceFloor
+/// [N] for forces, kScreenLengthFloor [m] for lengths; in violation units 1e-8 each, so
+/// the screen leaves to the solve only modes within 1e-8 of consistency. The bound must
+/// cover the screen's rounding and the solve's (test ReducedModel.ScreenErrorBoundCoversTheSolve).
+inline constexpr double kScreenRelativeError = 1e-10, kScreenForceFloor = 1e-4, kScreenLengthFloor = 1e-12;
 
 /// The mode search: the previous mode, then its neighbours, then every mode;
 /// the first consistent one, or (none consistent) the one with the smallest violation.
@@ -187,7 +210,7 @@ TruckSolution findTruckEquilibrium(const TruckGeometry& g, const TruckInputs& in
 /// The same search with the cache's factorizations (same result, bit for bit).
 TruckSolution findTruckEquilibrium(const TruckInputs& in, const TruckMode& previous, const TruckModeCache& cache,
                                    TruckSearchCounts* counts = nullptr,
-                                   TruckSearchPruning pruning = TruckSearchPruning::ChoiceBounds);
+                                   TruckSearchPruning pruning = TruckSearchPruning::Screened);
 
 /// A lower bound on solveTruckMode(g, in, mode).violation from the mode's spring,
 /// wedge, gib and lateral-wedge choices alone: pairs of choices on one side (or on
