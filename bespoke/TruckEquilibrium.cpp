@@ -617,7 +617,7 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     if (made->invertible) {
         Eigen::Matrix<double, N, N> inverse;
         for (int r = 0; r < N; ++r)
-            inverse.col(r) = solveScaled(*made, Eigen::Matrix<double, N, 1>::Unit(r), TruckSubstitution::Dense);
+            inverse.col(r) = solveScaled(*made, Eigen::Matrix<double, N, 1>::Unit(r));
         Eigen::Matrix<double, kCheckedCount, N> G = Eigen::Matrix<double, kCheckedCount, N>::Zero();
         for (int i : {0, 1}) {
             G(kRimForce + i, FCL + i) = G(kSideBearingForce + i, FSL + i) = G(kWheelForce + i, WL + i) = 1;
@@ -627,7 +627,10 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
         }
         G(kLateralFriction, PHIH) = 1;
         G.row(kLateral) = k.lateral.row;
-        made->checkRows = G * inverse;
+        made->checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
+        for (int q = 0; q < kCheckedCount; ++q)
+            for (int j = 0; j < N; ++j)
+                if (G(q, j) != 0) made->checkRows.row(q) += G(q, j) * inverse.row(j);
     }
     Factor* expected = nullptr;
     if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
