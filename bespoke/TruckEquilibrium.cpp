@@ -676,11 +676,16 @@ struct SearchContext {
         for (int i : {0, 1})
             for (int seg = 0; seg < 3; ++seg) springs[i][seg] = makeSpringForce(g, k.compression[i], SpringSegment(seg));
     }
-    TruckSolution solve(const TruckMode& mode) const {
-        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+    std::array<Linear, 2> getSprings(const TruckMode& mode) const {
+        return {springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+    }
+    Eigen::Matrix<double, N, 1> getRhs(const TruckMode& mode) const {
         Eigen::Matrix<double, N, 1> b;
-        assembleRhs(g, in, mode, k, P, b);
-        return solveFactored(g, in, mode, k, P, cache.getFactor(mode, in), b);
+        assembleRhs(g, in, mode, k, getSprings(mode), b);
+        return b;
+    }
+    TruckSolution solve(const TruckMode& mode) const {
+        return solveFactored(g, in, mode, k, getSprings(mode), cache.getFactor(mode, in), getRhs(mode));
     }
     /// Whether the mode's checks fail beyond doubt: a violation above
     /// kConsistentViolation by more than the screen's error bound on the quantities,
@@ -689,9 +694,7 @@ struct SearchContext {
     bool isCertainlyInconsistent(const TruckMode& mode) const {
         const TruckModeCache::Factor& f = cache.getFactor(mode, in);
         if (!f.invertible) return true;
-        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
-        Eigen::Matrix<double, N, 1> b;
-        assembleRhs(g, in, mode, k, P, b);
+        const Eigen::Matrix<double, N, 1> b = getRhs(mode);
         const ScreenValues value{k, f, b, b.cwiseAbs()};
         bool certain = false;
         checkInequalities(g, in, mode, value, [&certain](Checked v, Checked minimum, double unit) {
@@ -701,10 +704,7 @@ struct SearchContext {
         return certain;
     }
     bool isConsistent(const TruckMode& mode) const {
-        const std::array<Linear, 2> P{springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
-        Eigen::Matrix<double, N, 1> b;
-        assembleRhs(g, in, mode, k, P, b);
-        return isConsistentFactored(g, in, mode, k, cache.getFactor(mode, in), b);
+        return isConsistentFactored(g, in, mode, k, cache.getFactor(mode, in), getRhs(mode));
     }
 };
 
@@ -799,9 +799,7 @@ TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckM
     const SearchContext context(cache.getGeometry(), in, cache);
     const TruckModeCache::Factor& f = cache.getFactor(mode, in);
     if (!f.invertible) return out;
-    const std::array<Linear, 2> P{context.springs[0][int(mode.spring[0])], context.springs[1][int(mode.spring[1])]};
-    Eigen::Matrix<double, N, 1> b;
-    assembleRhs(context.g, in, mode, context.k, P, b);
+    const Eigen::Matrix<double, N, 1> b = context.getRhs(mode);
     const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
     const SolvedValues solved{context.k, x};
     const ScreenValues screened{context.k, f, b, b.cwiseAbs()};
