@@ -431,23 +431,28 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
     }
 }
 
+/// The unknown a checked force is (q < kRimGap).
+int getCheckedUnknown(int q) {
+    static constexpr int unknown[kRimGap] = {FCL, FCR, FSL, FSR, WL, WR, PHIL, PHIR, PHIH};
+    return unknown[q];
+}
+
+/// The kinematic quantity a checked length is (q ≥ kRimGap): its row and constant.
+const Linear& getCheckedKinematics(const Kinematics& k, int q) {
+    const int i = (q - kRimGap) % 2;
+    return q < kPadGap ? k.rimGap[i]
+           : q < kTreadLift ? k.padGap[i]
+           : q < kCompression ? k.treadLift[i]
+           : q < kLateral ? k.compression[i]
+                          : k.lateral;
+}
+
 /// The checked quantities from a mode's solution x.
 struct SolvedValues {
     const Kinematics& k;
     const Eigen::Matrix<double, N, 1>& x;
-    Checked operator()(int f) const {
-        switch (f) {
-        case kRimForce: case kRimForce + 1: return {x[FCL + f - kRimForce], 0};
-        case kSideBearingForce: case kSideBearingForce + 1: return {x[FSL + f - kSideBearingForce], 0};
-        case kWheelForce: case kWheelForce + 1: return {x[WL + f - kWheelForce], 0};
-        case kWedgeFriction: case kWedgeFriction + 1: return {x[PHIL + f - kWedgeFriction], 0};
-        case kLateralFriction: return {x[PHIH], 0};
-        case kRimGap: case kRimGap + 1: return {k.rimGap[f - kRimGap].evaluate(x), 0};
-        case kPadGap: case kPadGap + 1: return {k.padGap[f - kPadGap].evaluate(x), 0};
-        case kTreadLift: case kTreadLift + 1: return {k.treadLift[f - kTreadLift].evaluate(x), 0};
-        case kCompression: case kCompression + 1: return {k.compression[f - kCompression].evaluate(x), 0};
-        default: return {k.lateral.evaluate(x), 0};
-        }
+    Checked operator()(int q) const {
+        return {q < kRimGap ? x[getCheckedUnknown(q)] : getCheckedKinematics(k, q).evaluate(x), 0};
     }
 };
 
@@ -619,14 +624,10 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
         for (int r = 0; r < N; ++r)
             inverse.col(r) = solveScaled(*made, Eigen::Matrix<double, N, 1>::Unit(r));
         Eigen::Matrix<double, kCheckedCount, N> G = Eigen::Matrix<double, kCheckedCount, N>::Zero();
-        for (int i : {0, 1}) {
-            G(kRimForce + i, FCL + i) = G(kSideBearingForce + i, FSL + i) = G(kWheelForce + i, WL + i) = 1;
-            G(kWedgeFriction + i, PHIL + i) = 1;
-            G.row(kRimGap + i) = k.rimGap[i].row, G.row(kPadGap + i) = k.padGap[i].row;
-            G.row(kTreadLift + i) = k.treadLift[i].row, G.row(kCompression + i) = k.compression[i].row;
+        for (int q = 0; q < kCheckedCount; ++q) {
+            if (q < kRimGap) G(q, getCheckedUnknown(q)) = 1;
+            else G.row(q) = getCheckedKinematics(k, q).row;
         }
-        G(kLateralFriction, PHIH) = 1;
-        G.row(kLateral) = k.lateral.row;
         made->checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
         for (int q = 0; q < kCheckedCount; ++q)
             for (int j = 0; j < N; ++j)
@@ -648,15 +649,7 @@ struct ScreenValues {
     const Eigen::Matrix<double, N, 1>& b;
     const Eigen::Matrix<double, N, 1> size;  ///< |b|
     Checked operator()(int q) const {
-        double c = 0;
-        if (q >= kRimGap) {
-            const int i = (q - kRimGap) % 2;
-            c = q < kPadGap ? k.rimGap[i].c
-                : q < kTreadLift ? k.padGap[i].c
-                : q < kCompression ? k.treadLift[i].c
-                : q < kLateral ? k.compression[i].c
-                               : k.lateral.c;
-        }
+        const double c = q < kRimGap ? 0.0 : getCheckedKinematics(k, q).c;
         const auto row = f.checkRows.row(q);
         return Checked{row.dot(b) + c,
                        kScreenRelativeError * (row.cwiseAbs().dot(size) + std::abs(c)) +
