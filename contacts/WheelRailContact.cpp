@@ -7,7 +7,7 @@ namespace rockroll {
 using namespace SimTK;
 
 WheelRailForces WheelRailContact::calcForces(const State& s) const {
-    if (const WheelRailForces* cached = cache_.find(wheelset_.getMatterSubsystem(), s)) return *cached;
+    if (const WheelRailForces* cached = cache_.find(forces_, s)) return *cached;
     WheelRailForces out;
     evaluate(s, out);
     return out;
@@ -59,7 +59,7 @@ void WheelRailContact::evaluate(const State& s, WheelRailForces& out) const {
 
 void WheelRailContact::calcForce(const State& s, Vector_<SpatialVec>& bodyForces,
                                  Vector_<Vec3>&, Vector&) const {
-    WheelRailForces& f = cache_.upd(wheelset_.getMatterSubsystem(), s);
+    WheelRailForces& f = cache_.upd(forces_, s);
     evaluate(s, f);
     const BodyPose wheelset = BodyPose::calc(wheelset_, s);
     for (int i = 0; i < 2; ++i)

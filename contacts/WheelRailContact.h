@@ -81,9 +81,10 @@ class WheelRailContact : public SimTK::Force::Custom::Implementation {
 public:
     /// Side index 0 = left (+y), 1 = right (−y). p_Tread are the tread points
     /// on the wheelset; y_rail the rails' lateral positions.
-    WheelRailContact(SimTK::MobilizedBody wheelset, std::array<SimTK::Vec3, 2> p_Tread,
-                     std::array<double, 2> yRail, RailInputFunction rails, WheelRailLaw law)
-        : wheelset_(std::move(wheelset)), p_Tread_(p_Tread), yRail_(yRail),
+    WheelRailContact(const SimTK::GeneralForceSubsystem& forces, SimTK::MobilizedBody wheelset,
+                     std::array<SimTK::Vec3, 2> p_Tread, std::array<double, 2> yRail, RailInputFunction rails,
+                     WheelRailLaw law)
+        : forces_(forces), wheelset_(std::move(wheelset)), p_Tread_(p_Tread), yRail_(yRail),
           rails_(std::move(rails)), law_(law) {}
 
     /// At Dynamics stage and above, the forces calcForce computed for this State.
@@ -96,13 +97,15 @@ public:
     /// flanges in contact. The lateral restraint is external (its work is rail
     /// input) and holds none.
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
-    /// The cache lives in the matter subsystem (this element has no handle on its
-    /// force subsystem); q, u, z and time changes invalidate Dynamics system-wide.
-    void realizeTopology(SimTK::State& s) const override { cache_.allocate(wheelset_.getMatterSubsystem(), s); }
+    /// The cache lives in the element's own force subsystem, whose Topology-stage
+    /// allocations survive a change of Model-stage options (Euler angles instead of
+    /// quaternions: RockingModel::makeDefaultState).
+    void realizeTopology(SimTK::State& s) const override { cache_.allocate(forces_, s); }
 
 private:
     void evaluate(const SimTK::State& s, WheelRailForces& out) const;
 
+    const SimTK::GeneralForceSubsystem& forces_;
     SimTK::MobilizedBody wheelset_;
     std::array<SimTK::Vec3, 2> p_Tread_;
     std::array<double, 2> yRail_;

@@ -127,8 +127,15 @@ RailInputFunction RockingModel::makeRailInput(std::vector<double> trackOffsets) 
     };
 }
 
-State RockingModel::makeStaticState(bool requireLevelRails) const {
+State RockingModel::makeDefaultState() const {
     State s = system_.getDefaultState();
+    matter_.setUseEulerAngles(s, true);
+    system_.realizeModel(s);
+    return s;
+}
+
+State RockingModel::makeStaticState(bool requireLevelRails) const {
+    State s = makeDefaultState();
     s.setTime(0);
     std::vector<double> plateZ;
     for (const auto& truck : trucks_) plateZ.push_back(truck->setStaticState(s));
@@ -278,7 +285,7 @@ void RockingModel::resetEnergyAccounts(State& s) const { energyMeter_->reset(s);
 
 std::vector<int> RockingModel::getEnergyAuditYIndices() const {
     // Marks the meter's z entries and finds them in Y (z follows q and u there).
-    State s = system_.getDefaultState();
+    State s = makeDefaultState();
     for (int i = 0; i < s.getNY(); ++i) s.updY()[i] = 0;
     energyMeter_->mark(s);
     std::vector<int> out;

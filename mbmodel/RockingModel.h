@@ -43,6 +43,12 @@ public:
     /// requireLevelRails: refuse (throw) unless the rails are level at t = 0, as
     /// a run from rest needs; a run continuing a sweep only uses the geometry.
     SimTK::State makeStaticState(bool requireLevelRails = true) const;
+    /// Simbody's default state with every unrestricted orientation (the full car's Free car
+    /// body) as body-fixed x-y-z angles instead of a quaternion, realized to Model stage. Its
+    /// q̇ = N(q)·u has no normalization constraint, so CPodes projects nothing after a step
+    /// (bench/README.md, "Euler angles for the full car's body"); the angles are singular only
+    /// at ±90° of pitch.
+    SimTK::State makeDefaultState() const;
 
     const ChannelLayout& getChannels() const { return channels_.getLayout(); }
     /// Every recorded value at `s` (realizes it to Acceleration: the car-body accelerations).

@@ -61,7 +61,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
 
     auto integ = makeIntegrator(model.getSystem(), settings.integrator);
-    State s0 = model.getSystem().getDefaultState();
+    State s0 = model.makeDefaultState();
     if (initialY.empty()) {
         s0 = model.makeStaticState();
     } else {

@@ -127,7 +127,7 @@ void Truck::addElements(GeneralForceSubsystem& forces, const MobilizedBody& carB
         const std::array<Vec3, 2> tread{Vec3(0, car_.gauge / 2, -car_.wheelRadius),
                                         Vec3(0, -car_.gauge / 2, -car_.wheelRadius)};
         wheelRail_.push_back(&addCustomForce<WheelRailContact>(
-            forces, wheelsets_[i], tread, std::array<double, 2>{car_.gauge / 2, -car_.gauge / 2}, ws.rails, law));
+            forces, forces, wheelsets_[i], tread, std::array<double, 2>{car_.gauge / 2, -car_.gauge / 2}, ws.rails, law));
     }
 }
 

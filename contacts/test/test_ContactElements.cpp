@@ -189,7 +189,7 @@ TEST(FrictionWedge, SticksWithoutCreepBelowLimitAndSlipsAtIt) {
 TEST(WheelRailContact, LiftedWheelCarriesNothingAndLateralGoesThroughTheOther) {
     Rig rig;
     const double k = 8.8e8, g = 0.7176, r = 0.419;
-    auto* wr = new WheelRailContact(rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
+    auto* wr = new WheelRailContact(rig.forces, rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
                                     [](double) { return RailHeights{}; }, {{k, 0}, 3.5e8, 0, {}, 1});
     SimTK::Force::Custom(rig.forces, wr);
     SimTK::State s = rig.init();
@@ -293,7 +293,7 @@ TEST(WheelRailContact, AWheelsetPushedHarderThanMuNSlidesUntilItsFlangeTakesTheL
     WheelRailLaw law{{k, 5}, 0, 0, {}, 1};
     law.settings.lateral = LateralWheelRail::CreepAndFlange;  // μ 0.5, 75°, 0.375 in clearance
     const double V = 7.0;
-    auto* wr = new WheelRailContact(rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
+    auto* wr = new WheelRailContact(rig.forces, rig.upper, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g},
                                     [V](double) {
                                         RailHeights h;
                                         h.speed = V;

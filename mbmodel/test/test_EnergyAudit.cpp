@@ -232,7 +232,7 @@ TEST(EnergyAudit, WheelRailContactPowerIdentityWithChangingLoadShares) {
         h.zDot[0] = 0.03 * std::cos(3 * t);
         return h;
     };
-    auto* wr = new WheelRailContact(ws, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g}, rails, law);
+    auto* wr = new WheelRailContact(forces, ws, {Vec3(0, g, -r), Vec3(0, -g, -r)}, {g, -g}, rails, law);
     Force::Custom(forces, wr);
     system.realizeTopology();
     struct Case { double roll, y, z, rollRate, yRate, zRate; };
