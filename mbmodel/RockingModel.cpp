@@ -172,7 +172,8 @@ void RockingModel::solveStaticEquilibrium(State& s) const {
         matter_.multiplyByM(x, udot, f);
         return f;
     };
-    // Moves x by q += N(q)·du from the positions q0 (N at q0), quaternions renormalized.
+    // Moves x by q += N(q)·du from the positions q0 (N at q0); a quaternion, where a caller's
+    // state uses one, is renormalized.
     auto move = [this](State& x, const Vector& q0, const Vector& du) {
         x.updQ() = q0;
         system_.realize(x, Stage::Position);
