@@ -65,44 +65,28 @@ PiecewiseLinearLaw makeCompressionOnly(double stiffness, double clearance) {
 }
 
 using VectorFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
-/// A forward-difference Jacobian, column i with the step 1e-6·max(1, |x_i|) (see
-/// calcForwardJacobian); a model may compute the same columns faster.
+/// The residual's Jacobian at x (exact: DescribingFunctionModel::calcResidualJacobian).
 using JacobianFunction = std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>;
-
-/// Forward differences with a step of 1e-6 of max(1, |x_i|) in the scaled
-/// unknowns: MINPACK's own step (relative to |x_i|) collapses on harmonics
-/// that are exactly zero and then sees only round-off in the switching times.
-Eigen::MatrixXd calcJacobian(const VectorFunction& f, const Eigen::VectorXd& x, int rows) {
-    Eigen::MatrixXd J(rows, x.size());
-    const Eigen::VectorXd f0 = f(x);
-    for (int i = 0; i < x.size(); ++i) {
-        Eigen::VectorXd xp = x;
-        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
-        xp[i] += h;
-        J.col(i) = (f(xp) - f0) / h;
-    }
-    return J;
-}
 
 /// Eigen's HybridNonLinearSolver functor around any residual function.
 struct ResidualFunctor {
     VectorFunction f;
     int n = 0;
-    JacobianFunction jacobian;  ///< the same forward differences, faster; empty: calcJacobian
+    JacobianFunction jacobian;
     int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) const {
         fvec = f(x);
         return 0;
     }
     int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
-        jac = jacobian ? jacobian(x) : calcJacobian(f, x, n);
+        jac = jacobian(x);
         return 0;
     }
     int inputs() const { return n; }
     int values() const { return n; }
 };
 
-std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, Eigen::VectorXd x, double tolerance,
-                                           int* evaluations = nullptr, const JacobianFunction& jacobian = {}) {
+std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, const JacobianFunction& jacobian, Eigen::VectorXd x,
+                                           double tolerance, int* evaluations = nullptr) {
     ResidualFunctor functor{f, int(x.size()), jacobian};
     Eigen::HybridNonLinearSolver<ResidualFunctor> solver(functor);
     solver.parameters.maxfev = 200;
@@ -111,7 +95,7 @@ std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, Eigen::Vecto
     solver.useExternalScaling = true;
     solver.solve(x);
     if (evaluations) *evaluations = int(solver.nfev);
-    const Eigen::VectorXd r = f(x);
+    const Eigen::VectorXd& r = solver.fvec;  // f at the x it returns (it moves both together)
     if (!r.allFinite() || r.norm() > tolerance) return std::nullopt;
     return x;
 }
@@ -200,12 +184,6 @@ std::vector<TrigSeries> DescribingFunctionModel::calcElementHarmonics(const std:
     return std::visit([&](const auto& law) { return calcForceHarmonics(law, d, omega, weights, kHarmonics); }, e.law);
 }
 
-bool DescribingFunctionModel::movesElement(int unknown, const Element& e) {
-    const int dof = unknown / kCoefficients, body = dof / 3, coordinate = dof % 3;  // 0 roll, 1 y, 2 z
-    // The element reads its bodies' rolls (arms and weights) and the coordinate along its axis.
-    return (e.bodyA == body || e.bodyB == body) && (coordinate == 0 || coordinate == e.axis);
-}
-
 Eigen::VectorXd DescribingFunctionModel::assembleResidual(const std::vector<TrigSeries>& q,
                                                           const std::vector<std::vector<TrigSeries>>& harmonics,
                                                           double omega) const {
@@ -254,29 +232,74 @@ Eigen::VectorXd DescribingFunctionModel::calcResidual(const Eigen::VectorXd& x, 
 
 Eigen::MatrixXd DescribingFunctionModel::calcResidualJacobian(const Eigen::VectorXd& x, double speedMph,
                                                               bool speedColumn) const {
-    // calcJacobian's columns, bit for bit (same steps, same sums), but a column
-    // re-evaluates only the elements its unknown moves (about 2/5 of them).
+    // R is linear in the element harmonics H_j (through the generalized forces Q) and in
+    // the positions (the inertia terms); H_j depends on the unknowns through the
+    // element's displacement d and its weights θ_A, θ_B, each linear in the unknowns.
+    using M = EomHalfCarModel;
     const double omega = calcOmega(speedMph);
     const std::vector<TrigSeries> q = getPositions(x);
-    std::vector<std::vector<TrigSeries>> H(elements_.size());
-    for (size_t i = 0; i < elements_.size(); ++i) H[i] = calcElementHarmonics(q, elements_[i], omega);
-    const Eigen::VectorXd f0 = assembleResidual(q, H, omega);
-    Eigen::MatrixXd J(kNumUnknowns, kNumUnknowns + (speedColumn ? 1 : 0));
-    std::vector<std::vector<TrigSeries>> Hp = H;
-    for (int i = 0; i < kNumUnknowns; ++i) {
-        Eigen::VectorXd xp = x;
-        const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
-        xp[i] += h;
-        const std::vector<TrigSeries> qp = getPositions(xp);
-        for (size_t k = 0; k < elements_.size(); ++k)
-            if (movesElement(i, elements_[k])) Hp[k] = calcElementHarmonics(qp, elements_[k], omega);
-        J.col(i) = (assembleResidual(qp, Hp, omega) - f0) / h;
-        for (size_t k = 0; k < elements_.size(); ++k)
-            if (movesElement(i, elements_[k])) Hp[k] = H[k];
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(kNumUnknowns, kNumUnknowns + (speedColumn ? 1 : 0));
+    const double omegaPerMph = calcOmega(1.0);
+    // Inertia: r_{j,k} = (−(kω)²·M_j·q_{j,k} − Q_{j,k}) / F.
+    for (int j = 0; j < M::kNumDofs; ++j) {
+        const int body = j / 3;
+        const double mass = j % 3 == 0 ? reference_.getInertia(body) : reference_.getMass(body);
+        for (int k = 1; k <= kHarmonics; ++k)
+            for (int c : {2 * k - 1, 2 * k}) {
+                const int row = kCoefficients * j + c;
+                J(row, row) = -(k * omega) * (k * omega) * mass * kUnknownScale / kForceScale;
+                if (speedColumn)
+                    J(row, kNumUnknowns) =
+                        -2 * k * k * omega * omegaPerMph * mass * kUnknownScale * x[row] / kForceScale;
+            }
     }
-    if (speedColumn) {
-        const double h = 1e-6 * std::max(1.0, std::abs(speedMph));
-        J.col(kNumUnknowns) = (calcResidual(x, speedMph + h) - f0) / h;
+    // −∂Q/∂(·)/F into one column from an element's dH_0 (force), dH_1, dH_2 (weighted by θ_A, θ_B),
+    // as assembleResidual adds H into Q.
+    auto addForce = [&](int column, const Element& e, const TrigSeries& f, const TrigSeries& thetaAF,
+                        const TrigSeries* thetaBF, double scale) {
+        auto add = [&](int dof, const TrigSeries& s, double factor) {
+            for (int c = 0; c < kCoefficients; ++c)
+                J(kCoefficients * dof + c, column) -= factor * scale * s.getCoefficient(c) / kForceScale;
+        };
+        auto addMoment = [&](int body, const Eigen::Vector2d& p, const TrigSeries& thetaF, double sign) {
+            if (e.axis == kAxisZ) add(3 * body, f, sign * p.x()), add(3 * body, thetaF, -sign * p.y());
+            else add(3 * body, f, -sign * p.y()), add(3 * body, thetaF, -sign * p.x());
+        };
+        add(3 * e.bodyA + e.axis, f, 1);
+        addMoment(e.bodyA, e.pA, thetaAF, +1);
+        if (e.bodyB >= 0) {
+            add(3 * e.bodyB + e.axis, f, -1);
+            addMoment(e.bodyB, e.pB, *thetaBF, -1);
+        }
+    };
+    for (const Element& e : elements_) {
+        const TrigSeries d = calcRelative(q, e);
+        std::vector<TrigSeries> weights{TrigSeries::constant(1), q[3 * e.bodyA]};
+        if (e.bodyB >= 0) weights.push_back(q[3 * e.bodyB]);
+        const ForceHarmonicsDerivatives D = std::visit(
+            [&](const auto& law) { return calcForceHarmonicsDerivatives(law, d, omega, weights, kHarmonics); }, e.law);
+        const int nw = int(weights.size());
+        // The unknowns that move d (by `arm` per unit of the position's coefficient) and,
+        // for a roll, the weight it is.
+        struct Mover {
+            int dof;
+            double arm;
+            int weight;  ///< the weight it is: 1 θ_A, 2 θ_B, −1 none
+        };
+        auto armOf = [&](const Eigen::Vector2d& p) { return e.axis == kAxisZ ? p.x() : -p.y(); };
+        std::vector<Mover> movers{{3 * e.bodyA + e.axis, 1.0, -1}, {3 * e.bodyA, armOf(e.pA), 1}};
+        if (e.bodyB >= 0) movers.push_back({3 * e.bodyB + e.axis, -1.0, -1}), movers.push_back({3 * e.bodyB, -armOf(e.pB), 2});
+        for (const Mover& mv : movers)
+            for (int m = 0; m < kCoefficients; ++m) {
+                std::array<TrigSeries, 3> dH;
+                for (int j = 0; j < nw; ++j) {
+                    dH[j] = D.byDisplacement[j][m] * mv.arm;
+                    if (j == mv.weight) dH[j] += D.byWeight[m];
+                }
+                addForce(kCoefficients * mv.dof + m, e, dH[0], dH[1], nw > 2 ? &dH[2] : nullptr, kUnknownScale);
+            }
+        if (speedColumn)
+            addForce(kNumUnknowns, e, D.byOmega[0], D.byOmega[1], nw > 2 ? &D.byOmega[2] : nullptr, omegaPerMph);
     }
     return J;
 }
@@ -295,8 +318,9 @@ Eigen::VectorXd DescribingFunctionModel::makeStaticGuess() const {
 }
 
 std::optional<Eigen::VectorXd> DescribingFunctionModel::solve(double speedMph, const Eigen::VectorXd& guess) const {
-    return solvePowell([&](const Eigen::VectorXd& x) { return calcResidual(x, speedMph); }, guess, 1e-7, nullptr,
-                       [&](const Eigen::VectorXd& x) { return calcResidualJacobian(x, speedMph, false); });
+    return solvePowell([&](const Eigen::VectorXd& x) { return calcResidual(x, speedMph); },
+                       [&](const Eigen::VectorXd& x) { return calcResidualJacobian(x, speedMph, false); }, guess,
+                       1e-7);
 }
 
 std::optional<Eigen::VectorXd> DescribingFunctionModel::solveFromRest(double speedMph) const {
@@ -608,11 +632,10 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
     // arclength condition t·(u − u_pred) = 0, t the unit tangent (null vector of ∂R/∂u).
     const int n = kNumUnknowns;
     auto residualOf = [this](const Eigen::VectorXd& u) { return calcResidual(u.head(kNumUnknowns), u[kNumUnknowns]); };
-    auto jacobianOf = [this](const Eigen::VectorXd& u) {  // calcJacobian(residualOf, u, n), faster
+    auto jacobianOf = [this](const Eigen::VectorXd& u) {
         return calcResidualJacobian(u.head(kNumUnknowns), u[kNumUnknowns], true);
     };
-    // The tangent at u; J receives ∂R/∂u there, the corrector's first Jacobian on the
-    // next step (Powell's rank-one updates carry it from u to the predicted point).
+    // The tangent at u; J receives ∂R/∂u there, the corrector's Jacobian on the next step.
     auto tangentAt = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& previous, Eigen::MatrixXd& J) {
         J = jacobianOf(u);
         Eigen::MatrixXd A(n + 1, n + 1);
@@ -620,10 +643,41 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         A.row(n) = previous.transpose();
         Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
         rhs[n] = 1;
-        Eigen::VectorXd t = A.fullPivLu().solve(rhs);
+        Eigen::VectorXd t = A.partialPivLu().solve(rhs);
         return Eigen::VectorXd(t / t.norm());
     };
     const auto outside = [&](double v) { return v > s.toMph + 1e-9 || v < s.fromMph - 1e-9; };
+
+    // The corrector: Newton's method on [R(v); t·(v − u_pred)] = 0 from the predicted point,
+    // holding ∂R/∂u at u (the tangent's) while the steps contract by half or more (chord
+    // iterations; the arclength row is exact) and taking it at the iterate where they do
+    // not. Converged when ‖R‖ ≤ 1e-9 and the last step moved v by at most 1e-10 of its
+    // size; nullopt (the step Δs is then halved) after 30 residuals without that.
+    auto correctByNewton = [&](const auto& residual, const Eigen::VectorXd& predicted, const Eigen::VectorXd& t,
+                               const Eigen::MatrixXd& Ju, int& evaluations) -> std::optional<Eigen::VectorXd> {
+        Eigen::MatrixXd A(n + 1, n + 1);
+        A.topRows(n) = Ju;
+        A.row(n) = t.transpose();
+        Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+        Eigen::VectorXd v = predicted, r = residual(v);
+        evaluations = 1;
+        double previousStep = std::numeric_limits<double>::infinity();
+        while (evaluations < 30) {
+            const Eigen::VectorXd delta = lu.solve(-r);
+            v += delta;
+            r = residual(v);
+            ++evaluations;
+            if (!r.allFinite()) return std::nullopt;
+            const double step = delta.norm();
+            if (r.norm() <= 1e-9 && step <= 1e-10 * v.norm()) return v;
+            if (step > 0.5 * previousStep) {
+                A.topRows(n) = jacobianOf(v);
+                lu.compute(A);
+            }
+            previousStep = step;
+        }
+        return std::nullopt;
+    };
 
     // One direction of the continuation from u along t: the points after u, up to and
     // including the first one outside the range; `closed` when it comes back to `origin`.
@@ -634,27 +688,14 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         while (int(out.size()) < s.maxPoints) {
             const Eigen::VectorXd predicted = u + ds * t;
             int evaluations = 0;
-            bool first = true;
-            const auto corrected = solvePowell(
-                [&](const Eigen::VectorXd& v) {
-                    Eigen::VectorXd r(n + 1);
-                    r.head(n) = residualOf(v);
-                    r[n] = t.dot(v - predicted);
-                    return r;
-                },
-                predicted, 1e-7, &evaluations, [&](const Eigen::VectorXd& v) {
-                    Eigen::MatrixXd J(n + 1, n + 1);
-                    J.topRows(n) = first ? Ju : jacobianOf(v);  // first: at u, not at v = predicted
-                    first = false;
-                    const double c0 = t.dot(v - predicted);
-                    for (int i = 0; i <= n; ++i) {  // the arclength row by the same differences
-                        Eigen::VectorXd vp = v;
-                        const double h = 1e-6 * std::max(1.0, std::abs(v[i]));
-                        vp[i] += h;
-                        J(n, i) = (t.dot(vp - predicted) - c0) / h;
-                    }
-                    return J;
-                });
+            const auto arclengthResidual = [&](const Eigen::VectorXd& v) {
+                Eigen::VectorXd r(n + 1);
+                r.head(n) = residualOf(v);
+                r[n] = t.dot(v - predicted);
+                return r;
+            };
+            const std::optional<Eigen::VectorXd> corrected =
+                correctByNewton(arclengthResidual, predicted, t, Ju, evaluations);
             if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
                 ds *= 0.5;
                 if (ds < s.minStep) break;

@@ -201,9 +201,10 @@ public:
     double calcOmega(double speedMph) const;
     /// Scaled harmonic-balance residual (forces in 10 kN, moments in 10 kN·m).
     Eigen::VectorXd calcResidual(const Eigen::VectorXd& x, double speedMph) const;
-    /// ∂R/∂x (45 columns) and, with speedColumn, ∂R/∂V [per mph]: the forward differences
-    /// of calcResidual with the step 1e-6·max(1, |u_i|), each column re-evaluating only
-    /// the elements its unknown moves (bit-identical to differencing calcResidual).
+    /// ∂R/∂x (45 columns) and, with speedColumn, ∂R/∂V [per mph], exact: each element's
+    /// harmonics differentiated in closed form (calcForceHarmonicsDerivatives), chained
+    /// through its displacement and weights to the unknowns (test
+    /// DescribingFunction.ExactJacobianMatchesCentralDifferences).
     Eigen::MatrixXd calcResidualJacobian(const Eigen::VectorXd& x, double speedMph, bool speedColumn) const;
     /// Static equilibrium, no harmonics.
     Eigen::VectorXd makeStaticGuess() const;
@@ -260,8 +261,6 @@ private:
     TrigSeries calcRelative(const std::vector<TrigSeries>& q, const Element& e) const;
     /// Fourier coefficients of the element's force, weighted by 1, θ_A and θ_B.
     std::vector<TrigSeries> calcElementHarmonics(const std::vector<TrigSeries>& q, const Element& e, double omega) const;
-    /// Whether unknown i (of the 45) enters the element's displacement or weights.
-    static bool movesElement(int unknown, const Element& e);
     Eigen::VectorXd assembleResidual(const std::vector<TrigSeries>& q,
                                      const std::vector<std::vector<TrigSeries>>& harmonics, double omega) const;
 

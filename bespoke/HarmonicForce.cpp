@@ -80,6 +80,90 @@ std::vector<ForcePiece> makePieces(std::vector<double> cuts, const LawAt& lawAt)
     return pieces;
 }
 
+/// N·∫ s·h over the moments' intervals, h = 1, cos kτ, sin kτ (k ≤ harmonics), N = 1/2π
+/// for the mean and 1/π for a harmonic: the harmonics of s restricted to those intervals.
+TrigSeries projectOnMoments(const TrigSeries& s, const TrigSeries::Moments& m, int harmonics) {
+    TrigSeries out(harmonics);
+    out.updMean() = s.integrate(m) / (2 * std::numbers::pi);
+    for (int k = 1; k <= harmonics; ++k) {
+        out.updCos(k) = s.integrateTimesHarmonic(m, k, false) / std::numbers::pi;
+        out.updSin(k) = s.integrateTimesHarmonic(m, k, true) / std::numbers::pi;
+    }
+    return out;
+}
+
+/// s's own harmonics up to `harmonics` (its integral over the whole period).
+TrigSeries truncateTo(const TrigSeries& s, int harmonics) {
+    TrigSeries out(harmonics);
+    out.updMean() = s.getMean();
+    for (int k = 1; k <= harmonics; ++k) out.updCos(k) = s.getCos(k), out.updSin(k) = s.getSin(k);
+    return out;
+}
+
+/// Where f jumps: at τ, by f(τ⁻) − f(τ⁺), τ a root of d'.
+struct ForceJump {
+    double tau = 0, size = 0;
+};
+
+/// ForceHarmonicsDerivatives for f = constant_p + slope_p·d on the pieces (one period),
+/// plus γω·d' throughout, with each piece's ∂constant/∂d_m (null: constants fixed) and
+/// the jumps of f at roots of d'.
+ForceHarmonicsDerivatives differentiatePieces(const std::vector<ForcePiece>& pieces,
+                                              const std::vector<ConstantGradient>* constantGradients,
+                                              const std::vector<ForceJump>& jumps, const TrigSeries& d,
+                                              double viscous, double omega, const std::vector<TrigSeries>& weights,
+                                              int harmonics) {
+    const int nd = d.getNumCoefficients(), nw = 2 * getMaxDegree(weights) + 1;
+    const int degree = std::min(TrigSeries::kMaxDegree, d.getDegree() + getMaxDegree(weights) + harmonics);
+    TrigSeries::Moments constant(degree), slope(degree);
+    std::vector<TrigSeries::Moments> constantBy(constantGradients ? nd : 0, TrigSeries::Moments(degree));
+    std::optional<TrigSeries::Angles> a0;
+    for (size_t p = 0; p < pieces.size(); ++p) {
+        const ForcePiece& piece = pieces[p];
+        if (piece.t1 - piece.t0 <= 0) continue;
+        if (piece.t1 - piece.t0 == 2 * std::numbers::pi) {
+            constant.addPeriod(piece.constant);
+            slope.addPeriod(piece.slope);
+            for (size_t m = 0; m < constantBy.size(); ++m) constantBy[m].addPeriod((*constantGradients)[p][m]);
+            continue;
+        }
+        if (!a0 || a0->tau != piece.t0) a0.emplace(piece.t0, degree);
+        const TrigSeries::Angles a1(piece.t1, degree);
+        constant.add(*a0, a1, piece.constant);
+        slope.add(*a0, a1, piece.slope);
+        for (size_t m = 0; m < constantBy.size(); ++m) constantBy[m].add(*a0, a1, (*constantGradients)[p][m]);
+        a0 = a1;
+    }
+    const TrigSeries rate = d.derivative(), curvature = rate.derivative();
+    ForceHarmonicsDerivatives out;
+    for (int m = 0; m < nw; ++m) {
+        const TrigSeries phi = TrigSeries::basis(m);
+        TrigSeries h = projectOnMoments(phi, constant, harmonics) + projectOnMoments(d * phi, slope, harmonics);
+        if (viscous != 0) h += truncateTo(rate * phi, harmonics) * (viscous * omega);
+        out.byWeight.push_back(h);
+    }
+    for (const TrigSeries& w : weights) {
+        out.byOmega.push_back(viscous != 0 ? truncateTo(rate * w, harmonics) * viscous : TrigSeries(harmonics));
+        std::vector<TrigSeries> byD;
+        for (int m = 0; m < nd; ++m) {
+            const TrigSeries phi = TrigSeries::basis(m);
+            TrigSeries h = projectOnMoments(phi * w, slope, harmonics);
+            if (constantGradients) h += projectOnMoments(w, constantBy[m], harmonics);
+            if (viscous != 0) h += truncateTo(phi.derivative() * w, harmonics) * (viscous * omega);
+            for (const ForceJump& jump : jumps) {
+                const TrigSeries::Angles a(jump.tau, degree);
+                const double moves = -phi.derivative().evaluate(a) / curvature.evaluate(a);  // ∂r/∂d_m
+                const double c = jump.size * w.evaluate(a) * moves / std::numbers::pi;
+                h.updMean() += 0.5 * c;
+                for (int k = 1; k <= harmonics; ++k) h.updCos(k) += c * a.cos[k], h.updSin(k) += c * a.sin[k];
+            }
+            byD.push_back(h);
+        }
+        out.byDisplacement.push_back(std::move(byD));
+    }
+    return out;
+}
+
 TrigSeries integrateNumerically(int harmonics, int n, const std::function<double(double)>& f) {
     TrigSeries out(harmonics);
     const double h = 2 * std::numbers::pi / n;
@@ -146,10 +230,24 @@ TrigSeries calcForceHarmonicsNumerically(const CoulombLaw& law, const TrigSeries
                                 [&](double tau) { return law.evaluate(rate.evaluate(tau)) * w.evaluate(tau); });
 }
 
-std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d) {
+std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d,
+                                                 std::vector<ConstantGradient>* constantGradients) {
     const double k = law.stiffness, Fc = law.limit;
+    const int nd = d.getNumCoefficients();
+    // φ_m at τ, m < nd: d_r = d(t_r) at a turning point moves by φ_m(t_r) (d'(t_r) = 0).
+    auto basisAt = [nd, &d](double tau) {
+        const TrigSeries::Angles a(tau, d.getDegree());
+        ConstantGradient g{};
+        g[0] = 1;
+        for (int m = 1; m < nd; ++m) g[m] = m % 2 == 1 ? a.cos[(m + 1) / 2] : a.sin[m / 2];
+        return g;
+    };
+    if (constantGradients) constantGradients->clear();
     const std::vector<double> turning = d.derivative().findRoots(0);
-    if (turning.size() < 2) return {{0, 2 * std::numbers::pi, 0.0, 0.0}};
+    if (turning.size() < 2) {
+        if (constantGradients) constantGradients->push_back(ConstantGradient{});
+        return {{0, 2 * std::numbers::pi, 0.0, 0.0}};
+    }
     std::vector<double> dTurning;  // d at each turning point
     for (double t : turning) dTurning.push_back(d.evaluate(t));
     size_t iMax = 0, iMin = 0;
@@ -158,8 +256,15 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
         if (dTurning[i] < dTurning[iMin]) iMin = i;
     }
     const double dMax = dTurning[iMax], dMin = dTurning[iMin];
-    if (dMax - dMin <= 2 * Fc / k)  // sticks all period, about mid-range
+    if (dMax - dMin <= 2 * Fc / k) {  // sticks all period, about mid-range
+        if (constantGradients) {
+            const ConstantGradient gMax = basisAt(turning[iMax]), gMin = basisAt(turning[iMin]);
+            ConstantGradient g{};
+            for (int m = 0; m < nd; ++m) g[m] = k * 0.5 * (gMax[m] + gMin[m]);
+            constantGradients->push_back(g);
+        }
         return {{0, 2 * std::numbers::pi, k * 0.5 * (dMax + dMin), -k}};
+    }
 
     std::vector<double> t, dt;  // turning points from the global maximum, unwrapped, and d there
     for (size_t i = 0; i <= turning.size(); ++i) {
@@ -169,6 +274,8 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
     }
     std::vector<ForcePiece> pieces;
     double fr = -Fc, dr = dMax;
+    // ∂f_r/∂d_m and ∂d_r/∂d_m, carried along the loop when asked for.
+    ConstantGradient gfr{}, gdr = constantGradients ? basisAt(t[0]) : ConstantGradient{};
     for (size_t i = 0; i + 1 < t.size(); ++i) {
         const double ta = t[i], tb = t[i + 1];
         const bool down = dt[i + 1] < dr;  // d is monotone from ta to tb
@@ -179,13 +286,24 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
         double tSlip = tb;
         if ((dt[i] - dSlip) * (dt[i + 1] - dSlip) < 0) tSlip = d.findCrossing(dSlip, ta, tb);
         pieces.push_back({ta, tSlip, fr + k * dr, -k});  // sticks: f_r − k(d − d_r)
+        const ConstantGradient gb = constantGradients ? basisAt(tb) : ConstantGradient{};
+        if (constantGradients) {
+            ConstantGradient g{};
+            for (int m = 0; m < nd; ++m) g[m] = gfr[m] + k * gdr[m];
+            constantGradients->push_back(g);
+        }
         if (tSlip < tb) {
             pieces.push_back({tSlip, tb, fLimit, 0.0});
+            if (constantGradients) constantGradients->push_back(ConstantGradient{});
             fr = fLimit;
+            gfr = ConstantGradient{};
         } else {
-            fr = std::clamp(fr - k * (dt[i + 1] - dr), -Fc, Fc);
+            const double unclamped = fr - k * (dt[i + 1] - dr);
+            fr = std::clamp(unclamped, -Fc, Fc);
+            for (int m = 0; m < nd; ++m) gfr[m] = fr == unclamped ? gfr[m] - k * (gb[m] - gdr[m]) : 0.0;
         }
         dr = dt[i + 1];
+        gdr = gb;
     }
     return pieces;
 }
@@ -207,6 +325,40 @@ double evaluateHistory(const std::vector<ForcePiece>& pieces, const TrigSeries& 
 std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const TrigSeries& d, double,
                                            const std::vector<TrigSeries>& weights, int harmonics) {
     return integratePieces(calcElastoPlasticHistory(law, d), d, nullptr, weights, harmonics);
+}
+
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const PiecewiseLinearLaw& law, const TrigSeries& d,
+                                                        double omega, const std::vector<TrigSeries>& weights,
+                                                        int harmonics) {
+    std::vector<double> cuts;
+    for (double b : law.breakpoints)
+        for (double r : d.findRoots(b)) cuts.push_back(r);
+    const std::vector<ForcePiece> pieces = makePieces(cuts, [&](double mid, ForcePiece& p) {
+        const int i = findSegment(law.breakpoints, d.evaluate(mid));
+        p.constant = law.alpha[i], p.slope = law.beta[i];
+    });
+    return differentiatePieces(pieces, nullptr, {}, d, law.viscous, omega, weights, harmonics);
+}
+
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const CoulombLaw& law, const TrigSeries& d, double omega,
+                                                        const std::vector<TrigSeries>& weights, int harmonics) {
+    const TrigSeries rate = d.derivative() * omega, curvature = d.derivative().derivative();
+    const std::vector<double> roots = rate.findRoots(0);
+    const std::vector<ForcePiece> pieces =
+        makePieces(roots, [&](double mid, ForcePiece& p) { p.constant = law.evaluate(rate.evaluate(mid)); });
+    std::vector<ForceJump> jumps;
+    for (double r : roots) {  // d' from + to − (d'' < 0): f from −F_c to +F_c, a jump f(r⁻) − f(r⁺) = −2F_c
+        const double c = curvature.evaluate(r);
+        if (c != 0) jumps.push_back({r, c < 0 ? -2 * law.limit : 2 * law.limit});
+    }
+    return differentiatePieces(pieces, nullptr, jumps, d, 0.0, omega, weights, harmonics);
+}
+
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const ElastoPlasticLaw& law, const TrigSeries& d, double omega,
+                                                        const std::vector<TrigSeries>& weights, int harmonics) {
+    std::vector<ConstantGradient> gradients;
+    const std::vector<ForcePiece> pieces = calcElastoPlasticHistory(law, d, &gradients);
+    return differentiatePieces(pieces, &gradients, {}, d, 0.0, omega, weights, harmonics);
 }
 
 TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,

@@ -13,6 +13,7 @@
 // for the moment of a force whose arm turns with the body) is a trig polynomial too.
 #include "bespoke/TrigSeries.h"
 
+#include <array>
 #include <vector>
 
 namespace rockroll {
@@ -46,7 +47,12 @@ struct ForcePiece {
     double t0 = 0, t1 = 0;
     double constant = 0, slope = 0;
 };
-std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d);
+/// Each piece's constant as a function of d's coefficients: ∂constant/∂d_m, m in
+/// TrigSeries::basis order (a stuck piece's constant f_r + k_b·d_r carries d at its
+/// turning points; a sliding piece's is ±F_c).
+using ConstantGradient = std::array<double, 2 * TrigSeries::kMaxDegree + 1>;
+std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, const TrigSeries& d,
+                                                 std::vector<ConstantGradient>* constantGradients = nullptr);
 /// f(τ) of a history of d (the pieces cover one period from pieces.front().t0).
 double evaluateHistory(const std::vector<ForcePiece>& pieces, const TrigSeries& d, double tau);
 
@@ -64,6 +70,31 @@ std::vector<TrigSeries> calcForceHarmonics(const CoulombLaw& law, const TrigSeri
 
 std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const TrigSeries& d, double omega,
                                            const std::vector<TrigSeries>& weights, int harmonics);
+
+/// The first derivatives of calcForceHarmonics(law, d, ω, weights) H_j (the harmonics of
+/// f·w_j), exact. With d_m and w_m the coefficients of d and w_j in TrigSeries::basis
+/// order, f = c_p + β_p·d + γ·ω·d' on piece p, N = 1/2π for the mean and 1/π for a
+/// harmonic h = cos kτ, sin kτ:
+///   ∂H_j/∂d_m = N·[Σ_p ∂c_p/∂d_m ∫_p w_j·h + ∫ β·φ_m·w_j·h + γω ∫ φ_m'·w_j·h]
+///               + N·Σ_r (f(r⁻) − f(r⁺))·w_j(r)·h(r)·∂r/∂d_m,
+///   ∂H_j/∂w_m = N·∫ f·φ_m·h,        ∂H_j/∂ω = N·γ ∫ d'·w_j·h,
+/// φ_m = TrigSeries::basis(m). The moving ends of the pieces add nothing where f is
+/// continuous in τ (the piecewise-linear laws, whose segments meet, and the
+/// elasto-plastic loop); where it jumps (Coulomb, at the roots r of d', which move by
+/// ∂r/∂d_m = −φ_m'(r)/d''(r)) they add the last sum.
+struct ForceHarmonicsDerivatives {
+    std::vector<std::vector<TrigSeries>> byDisplacement;  ///< [j][m]: ∂H_j/∂d_m
+    std::vector<TrigSeries> byWeight;                     ///< [m]: ∂H_j/∂w_m, the same for every j
+    std::vector<TrigSeries> byOmega;                      ///< [j]: ∂H_j/∂ω
+};
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const PiecewiseLinearLaw& law, const TrigSeries& d,
+                                                        double omega, const std::vector<TrigSeries>& weights,
+                                                        int harmonics);
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const CoulombLaw& law, const TrigSeries& d, double omega,
+                                                        const std::vector<TrigSeries>& weights, int harmonics);
+ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const ElastoPlasticLaw& law, const TrigSeries& d,
+                                                        double omega, const std::vector<TrigSeries>& weights,
+                                                        int harmonics);
 /// Steps the elasto-plastic law through two periods on n points and takes the
 /// coefficients of the second by the midpoint rule (for checking).
 TrigSeries calcForceHarmonicsNumerically(const ElastoPlasticLaw& law, const TrigSeries& d, const TrigSeries& w,

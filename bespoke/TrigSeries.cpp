@@ -26,6 +26,10 @@ TrigSeries TrigSeries::sine(int k, double amplitude) {
     return s;
 }
 
+TrigSeries TrigSeries::basis(int index) {
+    return index == 0 ? constant(1) : index % 2 == 1 ? cosine((index + 1) / 2) : sine(index / 2);
+}
+
 int TrigSeries::checkedSize(int degree) {
     if (degree < 0 || degree > kMaxDegree)
         throw std::length_error("TrigSeries: degree " + std::to_string(degree) + " above the maximum " +
@@ -178,7 +182,14 @@ std::vector<double> TrigSeries::findRoots(double level) const {
     int top = 0;
     const int grid = 4 * N;
     std::array<double, 4 * kMaxDegree + 1> gridValues;
-    for (int i = 0; i < grid; ++i) gridValues[i] = evaluate(kTwoPi * i / grid) - level;
+    // The grid's angles depend on N alone: computed once (the same bits as Angles(τ_i)).
+    static const auto gridAngles = [] {
+        std::array<std::vector<Angles>, kMaxDegree + 1> table;
+        for (int n = 1; n <= kMaxDegree; ++n)
+            for (int i = 0; i < 4 * n; ++i) table[n].emplace_back(kTwoPi * i / (4 * n), kMaxDegree);
+        return table;
+    }();
+    for (int i = 0; i < grid; ++i) gridValues[i] = evaluate(gridAngles[N][i]) - level;
     gridValues[grid] = gridValues[0];  // s(2π) = s(0): one period
     for (int i = grid - 1; i >= 0; --i)  // the first interval on top
         stack[top++] = {kTwoPi * i / grid, kTwoPi * (i + 1) / grid, gridValues[i], gridValues[i + 1]};

@@ -40,11 +40,17 @@ public:
     }
     static TrigSeries cosine(int k, double amplitude = 1);
     static TrigSeries sine(int k, double amplitude = 1);
+    /// The index-th basis function in the coefficients' order: 1, cos τ, sin τ, cos 2τ, sin 2τ, …
+    static TrigSeries basis(int index);
 
     int getDegree() const { return (size_ - 1) / 2; }
     double getMean() const { return c_[0]; }
     double getCos(int k) const { return k <= getDegree() ? c_[2 * k - 1] : 0.0; }
     double getSin(int k) const { return k <= getDegree() ? c_[2 * k] : 0.0; }
+    /// 2·degree + 1: the mean, then cos kτ and sin kτ for k = 1 … degree.
+    int getNumCoefficients() const { return size_; }
+    /// The coefficient of basis(index) (zero past the degree).
+    double getCoefficient(int index) const { return index < size_ ? c_[index] : 0.0; }
     double& updMean() { return c_[0]; }
     double& updCos(int k);
     double& updSin(int k);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 using namespace rockroll;
 
@@ -64,6 +65,44 @@ TEST(DescribingFunction, StaticGuessBalancesWithoutInput) {
     const DescribingFunctionModel df = makeModel(0.0);
     const Eigen::VectorXd r = df.calcResidual(df.makeStaticGuess(), 14);
     EXPECT_LT(r.norm(), 1e-6);
+}
+
+// The exact Jacobian (each law's harmonics differentiated in closed form) against central
+// differences of the residual, at the path's largest rocking (the wheels lift, the
+// contacts open and close, the wedges slide), on the lowest branch (12 mph), and at a
+// point off the solution set.
+TEST(DescribingFunction, ExactJacobianMatchesCentralDifferences) {
+    const DescribingFunctionModel df = makeModel(0.75);
+    const auto low = df.solveFromRest(12.0);
+    ASSERT_TRUE(low);
+    ContinuationSettings s = makePathSettings(12, 22);
+    s.maxPoints = 250;
+    const SteadyStateSet set = df.trace(s);
+    ASSERT_FALSE(set.paths.empty());
+    const SteadyStatePoint* severe = nullptr;  // the largest roll
+    for (const auto& p : set.paths[0].points)
+        if (!severe || p.rollAmplitudeDeg > severe->rollAmplitudeDeg) severe = &p;
+    ASSERT_NE(severe, nullptr);
+    ASSERT_GT(severe->wheelLiftFraction, 0) << "the check should see a wheel lift";
+    Eigen::VectorXd off = *low;
+    for (int i = 0; i < off.size(); ++i) off[i] += 0.3 * std::sin(1.7 * i);
+    for (const auto& [x, mph] : {std::pair{*low, 12.0}, std::pair{severe->harmonics, severe->speedMph}, std::pair{off, 13.0}}) {
+        const Eigen::MatrixXd J = df.calcResidualJacobian(x, mph, true);
+        ASSERT_EQ(J.cols(), x.size() + 1);
+        Eigen::MatrixXd fd(J.rows(), J.cols());
+        for (int i = 0; i <= x.size(); ++i) {
+            const double h = 1e-5;  // mm, mrad or mph: far below the contacts' deflections
+            Eigen::VectorXd xp = x, xm = x;
+            double vp = mph, vm = mph;
+            if (i < x.size()) xp[i] += h, xm[i] -= h;
+            else vp += h, vm -= h;
+            fd.col(i) = (df.calcResidual(xp, vp) - df.calcResidual(xm, vm)) / (2 * h);
+        }
+        EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff()) << mph << " mph";
+        for (int i = 0; i <= x.size(); ++i)
+            EXPECT_LT((J.col(i) - fd.col(i)).norm(), 1e-5 * std::max(1e-3, fd.col(i).norm()) + 1e-9)
+                << "column " << i << " at " << mph << " mph";
+    }
 }
 
 // On the lowest branch at two speeds the steady roll amplitude of the

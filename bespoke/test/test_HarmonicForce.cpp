@@ -10,6 +10,8 @@
 #include <complex>
 #include <random>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace { constexpr double kPi = 3.14159265358979323846; }
 
@@ -268,4 +270,79 @@ TEST(HarmonicForce, ElastoPlasticFrictionMatchesSteppedHysteresis) {
     const TrigSeries st = calcForceHarmonics(law, small, 2.0, std::vector<TrigSeries>{TrigSeries::constant(1)}, 2)[0];
     EXPECT_NEAR(st.getMean(), 0.0, 1e-9);
     EXPECT_NEAR(st.getCos(1), -law.stiffness * 1e-5, 1e-6);
+}
+
+namespace {
+/// Every derivative of calcForceHarmonicsDerivatives against central differences of
+/// calcForceHarmonics (step h in d's and the weights' coefficients and in ω), to `tol`
+/// of the largest derivative of its kind.
+template <class Law>
+void expectDerivativesMatchCentralDifferences(const Law& law, const TrigSeries& d, double omega,
+                                              const std::vector<TrigSeries>& weights, double h, double tol) {
+    const ForceHarmonicsDerivatives D = calcForceHarmonicsDerivatives(law, d, omega, weights, 2);
+    ASSERT_EQ(D.byDisplacement.size(), weights.size());
+    auto harmonicsAt = [&](const TrigSeries& dd, double w, const std::vector<TrigSeries>& ws) {
+        return calcForceHarmonics(law, dd, w, ws, 2);
+    };
+    auto compare = [&](const TrigSeries& exact, const TrigSeries& plus, const TrigSeries& minus, double step,
+                       double scale, const std::string& what) {
+        for (int c = 0; c < 5; ++c) {
+            const double fd = (plus.getCoefficient(c) - minus.getCoefficient(c)) / (2 * step);
+            EXPECT_NEAR(exact.getCoefficient(c), fd, tol * scale) << what << ", coefficient " << c;
+        }
+    };
+    auto largest = [](const auto& seriesList) {
+        double m = 0;
+        for (const TrigSeries& s : seriesList)
+            for (int c = 0; c < 5; ++c) m = std::max(m, std::abs(s.getCoefficient(c)));
+        return m;
+    };
+    double scaleD = 0;
+    for (const auto& byD : D.byDisplacement) scaleD = std::max(scaleD, largest(byD));
+    ASSERT_GT(scaleD, 0);
+    for (int m = 0; m < 5; ++m) {
+        TrigSeries dp = d, dm = d;
+        const double step = h * std::max(1e-3, std::abs(d.getCoefficient(m)));
+        (m == 0 ? dp.updMean() : m % 2 ? dp.updCos((m + 1) / 2) : dp.updSin(m / 2)) += step;
+        (m == 0 ? dm.updMean() : m % 2 ? dm.updCos((m + 1) / 2) : dm.updSin(m / 2)) -= step;
+        const auto plus = harmonicsAt(dp, omega, weights), minus = harmonicsAt(dm, omega, weights);
+        for (size_t j = 0; j < weights.size(); ++j)
+            compare(D.byDisplacement[j][m], plus[j], minus[j], step, scaleD,
+                    "d/dd_" + std::to_string(m) + ", weight " + std::to_string(j));
+    }
+    const double scaleW = largest(D.byWeight);
+    for (int m = 0; m < 5; ++m) {  // a weight's derivative, through the last weight (the same for each)
+        std::vector<TrigSeries> wp = weights, wm = weights;
+        TrigSeries& p = wp.back();
+        TrigSeries& q = wm.back();
+        const double step = 1e-6;
+        (m == 0 ? p.updMean() : m % 2 ? p.updCos((m + 1) / 2) : p.updSin(m / 2)) += step;
+        (m == 0 ? q.updMean() : m % 2 ? q.updCos((m + 1) / 2) : q.updSin(m / 2)) -= step;
+        compare(D.byWeight[m], harmonicsAt(d, omega, wp).back(), harmonicsAt(d, omega, wm).back(), step, scaleW,
+                "d/dw_" + std::to_string(m));
+    }
+    const double stepOmega = 1e-6 * omega;
+    const auto plus = harmonicsAt(d, omega + stepOmega, weights), minus = harmonicsAt(d, omega - stepOmega, weights);
+    for (size_t j = 0; j < weights.size(); ++j)
+        compare(D.byOmega[j], plus[j], minus[j], stepOmega, std::max(1.0, largest(D.byOmega)), "d/domega");
+}
+}  // namespace
+
+TEST(HarmonicForce, DerivativesOfEveryLawMatchCentralDifferences) {
+    const TrigSeries d = makeSeries(-0.001, 0.006, 0.002, 0.0015, -0.001);
+    const std::vector<TrigSeries> weights{TrigSeries::constant(1), makeSeries(0.01, 0.05, 0.02, -0.01, 0.004),
+                                          makeSeries(-0.02, 0.01, -0.03, 0.006, 0.002)};
+    // A unilateral contact with clearance (open part of the period), a viscous bilinear spring.
+    const double k = 1e7, c = 0.004;
+    expectDerivativesMatchCentralDifferences(PiecewiseLinearLaw{{-c}, {-k * c, 0.0}, {-k, 0.0}, 0.0}, d, 3.0, weights,
+                                             1e-6, 1e-6);
+    expectDerivativesMatchCentralDifferences(PiecewiseLinearLaw{{0.0}, {0.0, 0.0}, {1e5, 4e6}, 2e3}, d, 4.0, weights,
+                                             1e-6, 1e-6);
+    // Coulomb: the moving jumps.
+    expectDerivativesMatchCentralDifferences(CoulombLaw{4000}, d, 2.0, weights, 1e-6, 1e-6);
+    // Elasto-plastic: sliding with a minor loop, and sticking throughout.
+    const ElastoPlasticLaw friction{4000, 4000 / 2.5e-4};
+    expectDerivativesMatchCentralDifferences(friction, makeSeries(0.01, 0.004, 0.002, 0.0012, -0.0018), 2.0, weights,
+                                             1e-6, 1e-6);
+    expectDerivativesMatchCentralDifferences(friction, makeSeries(0.3, 1e-5, 2e-6, 1e-6, 0), 2.0, weights, 1e-6, 1e-6);
 }
