@@ -7,6 +7,7 @@
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
 
+#include "app/CommandResults.h"
 #include "bespoke/ReducedHalfCarModel.h"
 #include "scenarios/OrbitContinuation.h"
 #include "scenarios/PeriodicOrbit.h"
@@ -162,6 +163,32 @@ void sweepWorkflow(benchmark::State& state, const std::string& model, double fro
     state.counters["sim_s_per_cpu_s"] = simulated / cpu;
 }
 
+// One describing-function branch set as `rockroll steady scenarios/70ton-loaded.toml
+// --amplitude-in 0.75 --from-mph 10 --to-mph 25 --stability none --twin-periods 0
+// --no-sweep-starts` computes it (app/CommandResults.h calcSteady): the harmonic balance
+// alone, paths from rest at both ends of the range. Wall and CPU seconds, points, folds.
+void describingBranchSet(benchmark::State& state) {
+    app::SteadyOptions o;
+    o.fromMph = 10, o.toMph = 25;
+    o.stabilityMethod = "none";
+    o.twinPeriods = 0;
+    o.sweepStarts = false;
+    const Scenario sc = getDefaultScenario();
+    app::SteadyResult r;
+    const std::clock_t c0 = std::clock();
+    for (auto _ : state) r = app::calcSteady(sc, o);
+    const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC / double(state.iterations());
+    long points = 0, folds = 0;
+    for (const SteadyStatePath& path : r.set.paths) {
+        points += long(path.points.size());
+        if (!path.points.empty()) folds += path.points.back().foldsBefore;
+    }
+    state.counters["cpu_s"] = cpu;
+    state.counters["paths"] = double(r.set.paths.size());
+    state.counters["points"] = double(points);
+    state.counters["folds"] = double(folds);
+}
+
 // Cost of one right-hand-side evaluation: realize a perturbed state through
 // Acceleration, with every force element enabled or with all of them disabled
 // (Simbody's own floor for the same bodies and mobilities).
@@ -226,6 +253,10 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark("workflow/reduced_study_100", [](benchmark::State& s) {
         sweepWorkflow(s, model_names::kReduced, 10, 29.8, 0.2, false);
     })->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+    benchmark::RegisterBenchmark("describing/branch_set_10_25mph", describingBranchSet)
+        ->Iterations(3)
+        ->Unit(benchmark::kSecond)
+        ->UseRealTime();
     for (bool reuse : {false, true})
         benchmark::RegisterBenchmark(reuse ? "orbitbranch/eom/chord" : "orbitbranch/eom/fresh",
                                      [reuse](benchmark::State& s) { orbitBranch(s, reuse); })
