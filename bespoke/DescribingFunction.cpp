@@ -86,7 +86,7 @@ struct ResidualFunctor {
 };
 
 std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, const JacobianFunction& jacobian, Eigen::VectorXd x,
-                                           double tolerance, int* evaluations = nullptr) {
+                                           double tolerance) {
     ResidualFunctor functor{f, int(x.size()), jacobian};
     Eigen::HybridNonLinearSolver<ResidualFunctor> solver(functor);
     solver.parameters.maxfev = 200;
@@ -94,7 +94,6 @@ std::optional<Eigen::VectorXd> solvePowell(const VectorFunction& f, const Jacobi
     solver.diag.setConstant(x.size(), 1.0);
     solver.useExternalScaling = true;
     solver.solve(x);
-    if (evaluations) *evaluations = int(solver.nfev);
     const Eigen::VectorXd& r = solver.fvec;  // f at the x it returns (it moves both together)
     if (!r.allFinite() || r.norm() > tolerance) return std::nullopt;
     return x;
@@ -654,13 +653,13 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
     // not. Converged when ‖R‖ ≤ 1e-9 and the last step moved v by at most 1e-10 of its
     // size; nullopt (the step Δs is then halved) after 30 residuals without that.
     auto correctByNewton = [&](const auto& residual, const Eigen::VectorXd& predicted, const Eigen::VectorXd& t,
-                               const Eigen::MatrixXd& Ju, int& evaluations) -> std::optional<Eigen::VectorXd> {
+                               const Eigen::MatrixXd& Ju) -> std::optional<Eigen::VectorXd> {
         Eigen::MatrixXd A(n + 1, n + 1);
         A.topRows(n) = Ju;
         A.row(n) = t.transpose();
         Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
         Eigen::VectorXd v = predicted, r = residual(v);
-        evaluations = 1;
+        int evaluations = 1;
         double previousStep = std::numeric_limits<double>::infinity();
         while (evaluations < 30) {
             const Eigen::VectorXd delta = lu.solve(-r);
@@ -687,7 +686,6 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         double ds = s.initialStep, travelled = 0;
         while (int(out.size()) < s.maxPoints) {
             const Eigen::VectorXd predicted = u + ds * t;
-            int evaluations = 0;
             const auto arclengthResidual = [&](const Eigen::VectorXd& v) {
                 Eigen::VectorXd r(n + 1);
                 r.head(n) = residualOf(v);
@@ -695,7 +693,7 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
                 return r;
             };
             const std::optional<Eigen::VectorXd> corrected =
-                correctByNewton(arclengthResidual, predicted, t, Ju, evaluations);
+                correctByNewton(arclengthResidual, predicted, t, Ju);
             if (!corrected || (corrected->segment(0, n) - u.head(n)).norm() > 20 * ds + 1) {
                 ds *= 0.5;
                 if (ds < s.minStep) break;
@@ -711,7 +709,7 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
                 closed = true;
                 break;
             }
-            if (evaluations < 8 * (n + 2)) ds = std::min(s.maxStep, ds * 1.5);
+            ds = std::min(s.maxStep, ds * 1.5);
         }
         return out;
     };
