@@ -663,6 +663,7 @@ SteadyStateSet DescribingFunctionModel::trace(const ContinuationSettings& s) con
         double previousStep = std::numeric_limits<double>::infinity();
         while (evaluations < 30) {
             const Eigen::VectorXd delta = lu.solve(-r);
+            if (!delta.allFinite()) return std::nullopt;  // a singular matrix
             v += delta;
             r = residual(v);
             ++evaluations;

@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 namespace rockroll {
 
@@ -244,9 +245,14 @@ std::vector<ForcePiece> calcElastoPlasticHistory(const ElastoPlasticLaw& law, co
     };
     if (constantGradients) constantGradients->clear();
     const std::vector<double> turning = d.derivative().findRoots(0);
-    if (turning.size() < 2) {
-        if (constantGradients) constantGradients->push_back(ConstantGradient{});
-        return {{0, 2 * std::numbers::pi, 0.0, 0.0}};
+    if (turning.size() < 2) {  // d constant: no force
+        if (!constantGradients) return {{0, 2 * std::numbers::pi, 0.0, 0.0}};
+        // The same zero force written as the stick about the mean, f = k_b·(d̄ − d), so the
+        // derivatives are those of the smallest motion (it sticks about mid-range).
+        ConstantGradient g{};
+        g[0] = k;
+        constantGradients->push_back(g);
+        return {{0, 2 * std::numbers::pi, k * d.getMean(), -k}};
     }
     std::vector<double> dTurning;  // d at each turning point
     for (double t : turning) dTurning.push_back(d.evaluate(t));
@@ -330,6 +336,13 @@ std::vector<TrigSeries> calcForceHarmonics(const ElastoPlasticLaw& law, const Tr
 ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const PiecewiseLinearLaw& law, const TrigSeries& d,
                                                         double omega, const std::vector<TrigSeries>& weights,
                                                         int harmonics) {
+    // The derivative leaves out the moving ends of the segments: f must not jump there.
+    for (size_t i = 0; i < law.breakpoints.size(); ++i) {
+        const double b = law.breakpoints[i], below = law.alpha[i] + law.beta[i] * b,
+                     above = law.alpha[i + 1] + law.beta[i + 1] * b;
+        if (std::abs(below - above) > 1e-9 * std::max({1.0, std::abs(below), std::abs(above)}))
+            throw std::logic_error("calcForceHarmonicsDerivatives: a piecewise-linear law that jumps at a breakpoint");
+    }
     std::vector<double> cuts;
     for (double b : law.breakpoints)
         for (double r : d.findRoots(b)) cuts.push_back(r);

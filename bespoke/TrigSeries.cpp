@@ -150,6 +150,10 @@ TrigSeries operator*(const TrigSeries& a, const TrigSeries& b) {
 }
 
 std::vector<double> TrigSeries::findRoots(double level) const {
+    // Not finite: no comparison below could prune an interval (and nothing crosses).
+    if (!std::isfinite(level)) return {};
+    for (int i = 0; i < size_; ++i)
+        if (!std::isfinite(c_[i])) return {};
     double scale = std::abs(c_[0] - level);
     for (int i = 1; i < size_; ++i) scale = std::max(scale, std::abs(c_[i]));
     if (scale == 0) return {};

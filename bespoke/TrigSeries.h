@@ -81,7 +81,8 @@ public:
     /// The same from precomputed angles (bit-identical to integrate(a0.tau, a1.tau)).
     double integrate(const Angles& a0, const Angles& a1) const;
     /// Every τ in [0, 2π) with s(τ) = level, ascending (tangencies, and pairs of roots
-    /// closer than about 1e-9, may be missed). Interval subdivision with a bound on s''
+    /// closer than about 1e-9, may be missed; none when a coefficient or the level is not
+    /// finite). Interval subdivision with a bound on s''
     /// that cannot skip a crossing (docs/bespoke.md, "Exact Fourier coefficients").
     std::vector<double> findRoots(double level = 0) const;
     /// The τ in [lo, hi] with s(τ) = level, when s − level changes sign there and s is

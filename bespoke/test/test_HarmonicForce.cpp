@@ -250,16 +250,26 @@ TEST(HarmonicForce, CoulombMatchesQuadratureAndTheClassicalDescribingFunction) {
     EXPECT_NEAR(pure.getMean(), 0.0, 1e-9);
 }
 
+namespace {
+/// A wedge displacement with a minor loop (turning points at d ≈ 15.21, 7.196, 7.207 and
+/// 7.050 mm).
+const TrigSeries kMinorLoop = makeSeries(0.01, 0.004, 0.0003, 0.0012, 0.0001);
+}  // namespace
+
 TEST(HarmonicForce, ElastoPlasticFrictionMatchesSteppedHysteresis) {
     const ElastoPlasticLaw law{4000, 4000 / 2.5e-4};
-    // Slides (range ≫ 2F_c/k_b), with a second harmonic that makes a minor loop.
-    const TrigSeries d = makeSeries(0.01, 0.004, 0.002, 0.0012, -0.0018);
+    // Slides both ways (range ≫ 2F_c/k_b, two turning points); and with a minor loop: four
+    // turning points, the swing between the middle two (1e-5 m) far below 2F_c/k_b, so it
+    // sticks through it and the loop's memory carries on.
     const TrigSeries w = makeSeries(0.01, 0.05, 0.02, -0.01, 0.004);
-    for (const TrigSeries& weight : {TrigSeries::constant(1), w}) {
-        const TrigSeries exact = calcForceHarmonics(law, d, 2.0, std::vector<TrigSeries>{weight}, 2)[0];
-        const TrigSeries stepped = calcForceHarmonicsNumerically(law, d, weight, 2, 400000);
-        expectSameCoefficients(exact, stepped, 0.1);
+    for (const TrigSeries& d : {makeSeries(0.01, 0.004, 0.002, 0.0012, -0.0018), kMinorLoop}) {
+        for (const TrigSeries& weight : {TrigSeries::constant(1), w}) {
+            const TrigSeries exact = calcForceHarmonics(law, d, 2.0, std::vector<TrigSeries>{weight}, 2)[0];
+            const TrigSeries stepped = calcForceHarmonicsNumerically(law, d, weight, 2, 400000);
+            expectSameCoefficients(exact, stepped, 0.1);
+        }
     }
+    ASSERT_EQ(kMinorLoop.derivative().findRoots(0).size(), 4u);
     // Large amplitude: tends to the ideal Coulomb element.
     const TrigSeries big = TrigSeries::sine(1, 0.05);
     const TrigSeries ep = calcForceHarmonics(law, big, 2.0, std::vector<TrigSeries>{TrigSeries::constant(1)}, 2)[0];
@@ -340,9 +350,17 @@ TEST(HarmonicForce, DerivativesOfEveryLawMatchCentralDifferences) {
                                              1e-6, 1e-6);
     // Coulomb: the moving jumps.
     expectDerivativesMatchCentralDifferences(CoulombLaw{4000}, d, 2.0, weights, 1e-6, 1e-6);
-    // Elasto-plastic: sliding with a minor loop, and sticking throughout.
+    // Elasto-plastic: sliding both ways, sliding with a minor loop stuck through (the
+    // loop's memory in the stuck pieces' constants), and sticking throughout.
     const ElastoPlasticLaw friction{4000, 4000 / 2.5e-4};
     expectDerivativesMatchCentralDifferences(friction, makeSeries(0.01, 0.004, 0.002, 0.0012, -0.0018), 2.0, weights,
                                              1e-6, 1e-6);
+    expectDerivativesMatchCentralDifferences(friction, kMinorLoop, 2.0, weights, 1e-6, 1e-6);
     expectDerivativesMatchCentralDifferences(friction, makeSeries(0.3, 1e-5, 2e-6, 1e-6, 0), 2.0, weights, 1e-6, 1e-6);
+    // d constant: no force, and the derivatives of the smallest motion (sticking).
+    const ForceHarmonicsDerivatives still =
+        calcForceHarmonicsDerivatives(friction, makeSeries(0.01, 0, 0, 0, 0), 2.0, weights, 2);
+    ASSERT_EQ(still.byDisplacement[0].size(), 5u);
+    EXPECT_NEAR(still.byDisplacement[0][1].getCos(1), -friction.stiffness, 1e-9 * friction.stiffness);
+    EXPECT_NEAR(still.byDisplacement[0][0].getMean(), 0.0, 1e-9 * friction.stiffness);
 }
