@@ -81,6 +81,17 @@ std::vector<ForcePiece> makePieces(std::vector<double> cuts, const LawAt& lawAt)
     return pieces;
 }
 
+/// The law's segments over one period of d: cut where d crosses a breakpoint.
+std::vector<ForcePiece> makeLawPieces(const PiecewiseLinearLaw& law, const TrigSeries& d) {
+    std::vector<double> cuts;
+    for (double b : law.breakpoints)
+        for (double r : d.findRoots(b)) cuts.push_back(r);
+    return makePieces(cuts, [&](double mid, ForcePiece& p) {
+        const int i = findSegment(law.breakpoints, d.evaluate(mid));
+        p.constant = law.alpha[i], p.slope = law.beta[i];
+    });
+}
+
 /// N·∫ s·h over the moments' intervals, h = 1, cos kτ, sin kτ (k ≤ harmonics), N = 1/2π
 /// for the mean and 1/π for a harmonic: the harmonics of s restricted to those intervals.
 TrigSeries projectOnMoments(const TrigSeries& s, const TrigSeries::Moments& m, int harmonics) {
@@ -187,13 +198,7 @@ double PiecewiseLinearLaw::evaluate(double d, double dDot) const {
 
 std::vector<TrigSeries> calcForceHarmonics(const PiecewiseLinearLaw& law, const TrigSeries& d, double omega,
                                            const std::vector<TrigSeries>& weights, int harmonics) {
-    std::vector<double> cuts;
-    for (double b : law.breakpoints)
-        for (double r : d.findRoots(b)) cuts.push_back(r);
-    const std::vector<ForcePiece> pieces = makePieces(cuts, [&](double mid, ForcePiece& p) {
-        const int i = findSegment(law.breakpoints, d.evaluate(mid));
-        p.constant = law.alpha[i], p.slope = law.beta[i];
-    });
+    const std::vector<ForcePiece> pieces = makeLawPieces(law, d);
     const TrigSeries viscous = d.derivative() * (omega * law.viscous);
     return integratePieces(pieces, d, law.viscous != 0 ? &viscous : nullptr, weights, harmonics);
 }
@@ -343,13 +348,7 @@ ForceHarmonicsDerivatives calcForceHarmonicsDerivatives(const PiecewiseLinearLaw
         if (std::abs(below - above) > 1e-9 * std::max({1.0, std::abs(below), std::abs(above)}))
             throw std::logic_error("calcForceHarmonicsDerivatives: a piecewise-linear law that jumps at a breakpoint");
     }
-    std::vector<double> cuts;
-    for (double b : law.breakpoints)
-        for (double r : d.findRoots(b)) cuts.push_back(r);
-    const std::vector<ForcePiece> pieces = makePieces(cuts, [&](double mid, ForcePiece& p) {
-        const int i = findSegment(law.breakpoints, d.evaluate(mid));
-        p.constant = law.alpha[i], p.slope = law.beta[i];
-    });
+    const std::vector<ForcePiece> pieces = makeLawPieces(law, d);
     return differentiatePieces(pieces, nullptr, {}, d, law.viscous, omega, weights, harmonics);
 }
 
