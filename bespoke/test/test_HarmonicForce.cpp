@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -180,6 +181,21 @@ TEST(TrigSeries, RootsMatchTheCompanionMatrixEigenvalues) {
 
 // A pair of roots 1e-4 apart about a maximum that sits on the search's first grid point
 // (τ = 0, where the bound on s'' is reached exactly): both found.
+// A coefficient or level that is not finite has no roots (a NaN makes every pruning
+// comparison false; the search must not subdivide without end).
+TEST(TrigSeries, NonFiniteCoefficientsHaveNoRoots) {
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 5; ++c)
+        for (double bad : {nan, inf, -inf}) {
+            TrigSeries s = makeSeries(0.1, 1.0, -0.5, 0.3, 0.2);
+            (c == 0 ? s.updMean() : c % 2 ? s.updCos((c + 1) / 2) : s.updSin(c / 2)) = bad;
+            EXPECT_TRUE(s.findRoots(0.2).empty()) << "coefficient " << c << " = " << bad;
+        }
+    EXPECT_TRUE(makeSeries(0.1, 1.0, -0.5, 0.3, 0.2).findRoots(nan).empty());
+    EXPECT_EQ(makeSeries(0.1, 1.0, -0.5, 0.3, 0.2).findRoots(0.2).size() % 2, 0u);  // finite: crossings in pairs
+    EXPECT_FALSE(makeSeries(0.1, 1.0, -0.5, 0.3, 0.2).findRoots(0.2).empty());
+}
+
 TEST(TrigSeries, FindsCloseRootPairs) {
     const TrigSeries s = TrigSeries::cosine(1) + TrigSeries::cosine(2, 0.2);  // max 1.2 at τ = 0
     const double top = s.evaluate(0.0), curvature = 1 + 4 * 0.2;              // s ≈ top − curvature·τ²/2
