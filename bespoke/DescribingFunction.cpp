@@ -54,6 +54,16 @@ std::unique_ptr<StiffIntegrator> makeTwinIntegrator(const EomHalfCarModel& twin,
         accuracy, getEomAbsoluteTolerances(accuracy));
 }
 
+/// A point p = (p_y, p_z) of a body rolled by θ (small angles) moves along `axis` by
+/// `force`·θ (x_y = y + p_y − θ·p_z, x_z = z + p_z + θ·p_y), and a force f along that axis
+/// at p has the moment (force + θ·rolledForce)·f about the body's reference point.
+struct RollArms {
+    double force = 0, rolledForce = 0;
+};
+RollArms getRollArms(int axis, const Eigen::Vector2d& p) {
+    return axis == kAxisZ ? RollArms{p.x(), -p.y()} : RollArms{-p.y(), -p.x()};
+}
+
 PiecewiseLinearLaw makeLinear(double stiffness, double damping) {
     // f = −k·d − c·ḋ
     return {{}, {0.0}, {-stiffness}, -damping};
@@ -157,10 +167,11 @@ std::vector<TrigSeries> DescribingFunctionModel::getPositions(const Eigen::Vecto
 
 TrigSeries DescribingFunctionModel::calcStationSeries(const std::vector<TrigSeries>& q, int body,
                                                       const Eigen::Vector2d& p, int axis) const {
-    // Small angles: x_y = y + p_y − θ·p_z,  x_z = z + p_z + θ·p_y.
+    // Small angles (getRollArms): x_y = y + p_y − θ·p_z,  x_z = z + p_z + θ·p_y.
     const TrigSeries& th = q[3 * body];
-    if (axis == kAxisY) return q[3 * body + 1] + TrigSeries::constant(p.x()) + th * (-p.y());
-    return q[3 * body + 2] + TrigSeries::constant(p.y()) + th * p.x();
+    const double arm = getRollArms(axis, p).force;
+    if (axis == kAxisY) return q[3 * body + 1] + TrigSeries::constant(p.x()) + th * arm;
+    return q[3 * body + 2] + TrigSeries::constant(p.y()) + th * arm;
 }
 
 TrigSeries DescribingFunctionModel::calcRailSeries(int side, int axis) const {
@@ -190,12 +201,12 @@ Eigen::VectorXd DescribingFunctionModel::assembleResidual(const std::vector<Trig
     std::vector<TrigSeries> Q(M::kNumDofs, TrigSeries(kHarmonics));
     for (int b = 0; b < M::kNumBodies; ++b) Q[3 * b + 2].updMean() -= reference_.getMass(b) * units::g;
 
-    // Moment of f along `axis` at p on a body rolled by θ (small angles):
+    // Moment of f along `axis` at p on a body rolled by θ (getRollArms):
     //   z: (p_y − θ p_z)·f,   y: −(p_z + θ p_y)·f.
     auto addMoment = [](TrigSeries& Qth, int axis, const Eigen::Vector2d& p, const TrigSeries& f,
                         const TrigSeries& thetaF, double sign) {
-        if (axis == kAxisZ) Qth += (f * p.x() + thetaF * -p.y()) * sign;
-        else Qth += (f * -p.y() + thetaF * -p.x()) * sign;
+        const RollArms a = getRollArms(axis, p);
+        Qth += (f * a.force + thetaF * a.rolledForce) * sign;
     };
     for (size_t i = 0; i < elements_.size(); ++i) {
         const Element& e = elements_[i];
@@ -261,8 +272,8 @@ Eigen::MatrixXd DescribingFunctionModel::calcResidualJacobian(const Eigen::Vecto
                 J(kCoefficients * dof + c, column) -= factor * scale * s.getCoefficient(c) / kForceScale;
         };
         auto addMoment = [&](int body, const Eigen::Vector2d& p, const TrigSeries& thetaF, double sign) {
-            if (e.axis == kAxisZ) add(3 * body, f, sign * p.x()), add(3 * body, thetaF, -sign * p.y());
-            else add(3 * body, f, -sign * p.y()), add(3 * body, thetaF, -sign * p.x());
+            const RollArms a = getRollArms(e.axis, p);
+            add(3 * body, f, sign * a.force), add(3 * body, thetaF, sign * a.rolledForce);
         };
         add(3 * e.bodyA + e.axis, f, 1);
         addMoment(e.bodyA, e.pA, thetaAF, +1);
@@ -285,9 +296,10 @@ Eigen::MatrixXd DescribingFunctionModel::calcResidualJacobian(const Eigen::Vecto
             double arm;
             int weight;  ///< the weight it is: 1 θ_A, 2 θ_B, −1 none
         };
-        auto armOf = [&](const Eigen::Vector2d& p) { return e.axis == kAxisZ ? p.x() : -p.y(); };
-        std::vector<Mover> movers{{3 * e.bodyA + e.axis, 1.0, -1}, {3 * e.bodyA, armOf(e.pA), 1}};
-        if (e.bodyB >= 0) movers.push_back({3 * e.bodyB + e.axis, -1.0, -1}), movers.push_back({3 * e.bodyB, -armOf(e.pB), 2});
+        std::vector<Mover> movers{{3 * e.bodyA + e.axis, 1.0, -1}, {3 * e.bodyA, getRollArms(e.axis, e.pA).force, 1}};
+        if (e.bodyB >= 0)
+            movers.push_back({3 * e.bodyB + e.axis, -1.0, -1}),
+                movers.push_back({3 * e.bodyB, -getRollArms(e.axis, e.pB).force, 2});
         for (const Mover& mv : movers)
             for (int m = 0; m < kCoefficients; ++m) {
                 std::array<TrigSeries, 3> dH;

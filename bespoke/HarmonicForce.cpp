@@ -21,6 +21,14 @@ int getMaxDegree(const std::vector<TrigSeries>& weights) {
     return n;
 }
 
+/// s's own harmonics up to `harmonics` (its integral over the whole period).
+TrigSeries truncateTo(const TrigSeries& s, int harmonics) {
+    TrigSeries out(harmonics);
+    out.updMean() = s.getMean();
+    for (int k = 1; k <= harmonics; ++k) out.updCos(k) = s.getCos(k), out.updSin(k) = s.getSin(k);
+    return out;
+}
+
 /// The coefficients up to `harmonics` of f·w_j for each weight w_j, where f = constant_p +
 /// slope_p·d(τ) on each piece p (together one period) plus `viscous`(τ) throughout.
 /// Each piece adds its ∫ cos nτ, ∫ sin nτ (from the angles at its ends, computed once per
@@ -56,11 +64,7 @@ std::vector<TrigSeries> integratePieces(const std::vector<ForcePiece>& pieces, c
                 (sine ? out[j].updSin(k) : out[j].updCos(k)) =
                     (w.integrateTimesHarmonic(constant, k, sine) + dw.integrateTimesHarmonic(slope, k, sine)) /
                     std::numbers::pi;
-        if (viscous) {  // over the whole period: the product's own coefficients
-            const TrigSeries v = *viscous * w;
-            out[j].updMean() += v.getMean();
-            for (int k = 1; k <= harmonics; ++k) out[j].updCos(k) += v.getCos(k), out[j].updSin(k) += v.getSin(k);
-        }
+        if (viscous) out[j] += truncateTo(*viscous * w, harmonics);  // over the whole period
     }
     return out;
 }
@@ -101,14 +105,6 @@ TrigSeries projectOnMoments(const TrigSeries& s, const TrigSeries::Moments& m, i
         out.updCos(k) = s.integrateTimesHarmonic(m, k, false) / std::numbers::pi;
         out.updSin(k) = s.integrateTimesHarmonic(m, k, true) / std::numbers::pi;
     }
-    return out;
-}
-
-/// s's own harmonics up to `harmonics` (its integral over the whole period).
-TrigSeries truncateTo(const TrigSeries& s, int harmonics) {
-    TrigSeries out(harmonics);
-    out.updMean() = s.getMean();
-    for (int k = 1; k <= harmonics; ++k) out.updCos(k) = s.getCos(k), out.updSin(k) = s.getSin(k);
     return out;
 }
 
