@@ -183,10 +183,26 @@ void expectBalanced(const ScenarioRun& run, const std::string& model, double bou
 }  // namespace
 
 TEST(EnergyAudit, HalfCarAndEomBalanceWithinOnePercentOnASevereRun) {
+    // At the default accuracy (1e-4) the end of the run is held to the summary's 1 %. The
+    // worst moment is not held here: it is the energy meter's integration error, and on this
+    // case the half car's scatters between 0.06 % and 2.5 % when the accuracy moves between
+    // 0.9e-4 and 1.1e-4 (docs/model.md "Energy audit"); the next test holds it at 1e-5.
     for (const char* model : {"halfcar", "eom"}) {
         const ScenarioRun run = runScenario(makeSevereCase(model, 4.0));
         EXPECT_NE(run.summary.regime, "light") << model;
-        expectBalanced(run, model, 0.01, std::string(model) == "halfcar" ? 0.015 : 0.01);
+        expectBalanced(run, model, 0.01, 1.0);
+    }
+}
+
+TEST(EnergyAudit, HalfCarAndEomBalanceThroughoutASevereRunAtAccuracy1e5) {
+    // Measured worst after 0.5 s at accuracy 0.9e-5, 1e-5 and 1.1e-5: 0.007-0.008 % (half
+    // car), 0.001-0.005 % (eom); end of run <= 0.003 %.
+    for (const char* model : {"halfcar", "eom"}) {
+        Scenario sc = makeSevereCase(model, 4.0);
+        sc.run.integrator.accuracy = 1e-5;
+        const ScenarioRun run = runScenario(sc);
+        EXPECT_NE(run.summary.regime, "light") << model;
+        expectBalanced(run, model, 0.001, 0.002);
     }
 }
 
