@@ -74,8 +74,13 @@ TruckInputs ReducedHalfCarModel::makeTruckInputs(const RailState& rail, const St
 
 ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(double t, const State& y, const TruckMemory& mem,
                                                               TruckSearchCounts* counts) const {
+    return evaluate(rails_(t), y, mem, counts);
+}
+
+ReducedHalfCarModel::Evaluation ReducedHalfCarModel::evaluate(const RailState& rail, const State& y,
+                                                              const TruckMemory& mem, TruckSearchCounts* counts) const {
     Evaluation e;
-    e.rail = rails_(t);
+    e.rail = rail;
     e.truck = findTruckEquilibrium(makeTruckInputs(e.rail, y, mem), mem.mode, *modeCache_, counts);
     const double pin = e.truck.pinForce;
     const double h = car_.cgAboveCenterPlate, padAbovePlate = truck_.sbAboveSprings - truck_.cpAboveSprings;
@@ -247,8 +252,17 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     // ReducedModel.ReusedFirstStageIsTheEvaluationItReplaces).
     ReducedHalfCarModel::Evaluation accepted;
     double tAccepted = std::numeric_limits<double>::quiet_NaN();
+    // The rails at the last time asked for: a step's two midpoint stages share one
+    // time, and its last stage the time of the evaluation it then accepts (the same
+    // RailState when the times are equal, bit for bit).
+    double railTime = std::numeric_limits<double>::quiet_NaN();
+    RailState rail;
+    auto getRails = [&](double t) -> const RailState& {
+        if (!(t == railTime)) rail = model.calcRails(t), railTime = t;
+        return rail;
+    };
     auto accept = [&](double t) -> const std::vector<double>& {
-        accepted = model.evaluate(t, y, mem, &st.modes);
+        accepted = model.evaluate(getRails(t), y, mem, &st.modes);
         tAccepted = t;
         const ReducedHalfCarModel::Evaluation& e = accepted;
         energy[1] += ReducedHalfCarModel::calcSliderDissipation(mem, e.truck);
@@ -270,10 +284,12 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     for (; k < total && !result.stop; ++k) {
         const double t = double(k) * h, dt = k < n ? h : last;
         const ReducedHalfCarModel::Evaluation e1 =
-            t == tAccepted && accepted.truck.consistent ? accepted : model.evaluate(t, y, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e2 = model.evaluate(t + dt / 2, y + dt / 2 * e1.derivative, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e3 = model.evaluate(t + dt / 2, y + dt / 2 * e2.derivative, mem, &st.modes);
-        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(t + dt, y + dt * e3.derivative, mem, &st.modes);
+            t == tAccepted && accepted.truck.consistent ? accepted : model.evaluate(getRails(t), y, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e2 =
+            model.evaluate(getRails(t + dt / 2), y + dt / 2 * e1.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e3 =
+            model.evaluate(getRails(t + dt / 2), y + dt / 2 * e2.derivative, mem, &st.modes);
+        const ReducedHalfCarModel::Evaluation e4 = model.evaluate(getRails(t + dt), y + dt * e3.derivative, mem, &st.modes);
         y += dt / 6 * (e1.derivative + 2 * e2.derivative + 2 * e3.derivative + e4.derivative);
         energy[0] += dt / 6 * (e1.railInputPower + 2 * e2.railInputPower + 2 * e3.railInputPower + e4.railInputPower);
         const double tNext = k < n ? t + h : duration;

@@ -65,6 +65,10 @@ public:
     std::vector<double> calcStaticState() const;
     /// counts: the truck-mode search's counts are added there (nullptr: not counted).
     Evaluation evaluate(double t, const State& y, const TruckMemory& memory, TruckSearchCounts* counts = nullptr) const;
+    /// The same with the rails at the evaluation's time already computed (calcRails(t)).
+    Evaluation evaluate(const RailState& rail, const State& y, const TruckMemory& memory,
+                        TruckSearchCounts* counts = nullptr) const;
+    RailState calcRails(double t) const { return rails_(t); }
 
     /// What one output time records: the half car's common values and this model's truck.
     struct Sample : HalfCarSample {

@@ -356,9 +356,15 @@ Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix
 }
 
 /// A quantity a check reads, and a bound on its absolute error: 0 from a solve (the
-/// value the checks decide on), the screen's bound from its sums (ScreenValues).
+/// value the checks decide on), the screen's bound from its sums (ScreenValues). The
+/// bound is named, not computed: the screened quantity errorOf's bound (none when −1)
+/// plus errorAdded. A screen computes it only for a check the value alone fails
+/// (ScreenValues::getError), since a bound ≥ 0 can only turn a failed check into an
+/// undecided one.
 struct Checked {
-    double value = 0, error = 0;
+    double value = 0;
+    int errorOf = -1;
+    double errorAdded = 0;
 };
 
 /// Every inequality of a mode, as need(value, minimum, unit) for "value ≥ minimum",
@@ -371,7 +377,7 @@ struct Checked {
 template <class Values, class Need>
 void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, Values&& v, Need&& need) {
     const Checked zero{};
-    auto exact = [](double value) { return Checked{value, 0}; };
+    auto exact = [](double value) { return Checked{value}; };
     for (int i : {0, 1})
         if (!need(v(kRimForce + i), zero, 1e4) || !need(v(kSideBearingForce + i), zero, 1e4) ||
             !need(v(kWheelForce + i), zero, 1e4))
@@ -392,11 +398,12 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
             if (!need(Z, exact(g.travel), 1e-4)) return;
             break;
         }
-        const Checked dZ{Z.value - in.compressionOld[i], Z.error + 1e-15 * std::abs(in.compressionOld[i])};
+        const Checked dZ{Z.value - in.compressionOld[i], Z.errorOf,
+                         Z.errorAdded + 1e-15 * std::abs(in.compressionOld[i])};
         switch (mode.wedge[i]) {
         case WedgeState::Stick: {
             const Checked phi = v(kWedgeFriction + i);
-            if (!need(exact(g.Fv), Checked{std::abs(phi.value), phi.error}, 1e4)) return;
+            if (!need(exact(g.Fv), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, 1e4)) return;
             break;
         }
         case WedgeState::SlipUp:  // Z falling
@@ -408,7 +415,7 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
         }
     }
     const Checked Y = v(kLateral);
-    const Checked dY{Y.value - in.lateralOld, Y.error + 1e-15 * std::abs(in.lateralOld)};
+    const Checked dY{Y.value - in.lateralOld, Y.errorOf, Y.errorAdded + 1e-15 * std::abs(in.lateralOld)};
     switch (mode.gib) {
     case GibContact::Open:
         if (!need(Y, exact(-g.gibClearance), 1e-4) || !need(exact(g.gibClearance), Y, 1e-4)) return;
@@ -423,7 +430,7 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
     switch (mode.lateralWedge) {
     case WedgeState::Stick: {
         const Checked phi = v(kLateralFriction);
-        need(exact(2 * g.Fh), Checked{std::abs(phi.value), phi.error}, 1e4);
+        need(exact(2 * g.Fh), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, 1e4);
         break;
     }
     case WedgeState::SlipUp: need(dY, zero, 1e-4); break;
@@ -452,7 +459,7 @@ struct SolvedValues {
     const Kinematics& k;
     const Eigen::Matrix<double, N, 1>& x;
     Checked operator()(int q) const {
-        return {q < kRimGap ? x[getCheckedUnknown(q)] : getCheckedKinematics(k, q).evaluate(x), 0};
+        return {q < kRimGap ? x[getCheckedUnknown(q)] : getCheckedKinematics(k, q).evaluate(x)};
     }
 };
 
@@ -591,22 +598,6 @@ TruckModeCache::~TruckModeCache() {
     for (auto& s : slots_) delete s.load(std::memory_order_relaxed);
 }
 
-int TruckModeCache::getIndex(const TruckMode& m) {
-    const int sp = 3 * ((int(m.spring[0]) + 2) % 3) + (int(m.spring[1]) + 2) % 3;  // enumeration order: linear first
-    const int f = 3 * int(m.wedge[0]) + int(m.wedge[1]);
-    const int lat = 3 * int(m.lateralWedge) + int(m.gib);
-    return (((int(m.support) * 3 + int(m.wheels)) * 9 + sp) * 9 + f) * 9 + lat;
-}
-
-TruckMode TruckModeCache::getMatrixClass(const TruckMode& m) {
-    TruckMode c = m;
-    for (WedgeState& w : c.wedge)
-        if (w == WedgeState::SlipDown) w = WedgeState::SlipUp;
-    if (c.lateralWedge == WedgeState::SlipDown) c.lateralWedge = WedgeState::SlipUp;
-    if (c.gib == GibContact::Negative) c.gib = GibContact::Positive;
-    return c;
-}
-
 const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
     std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
@@ -650,11 +641,14 @@ struct ScreenValues {
     const Eigen::Matrix<double, N, 1> size;  ///< |b|
     Checked operator()(int q) const {
         const double c = q < kRimGap ? 0.0 : getCheckedKinematics(k, q).c;
-        const auto row = f.checkRows.row(q);
-        return Checked{row.dot(b) + c,
-                       kScreenRelativeError * (row.cwiseAbs().dot(size) + std::abs(c)) +
-                           (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor)};
+        return Checked{f.checkRows.row(q).dot(b) + c, q};
     }
+    double calcError(int q) const {
+        const double c = q < kRimGap ? 0.0 : getCheckedKinematics(k, q).c;
+        return kScreenRelativeError * (f.checkRows.row(q).cwiseAbs().dot(size) + std::abs(c)) +
+               (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor);
+    }
+    double getError(const Checked& v) const { return (v.errorOf >= 0 ? calcError(v.errorOf) : 0.0) + v.errorAdded; }
 };
 
 /// What every mode of one search shares: the kinematics and the three spring laws per side.
@@ -690,8 +684,10 @@ struct SearchContext {
         const Eigen::Matrix<double, N, 1> b = getRhs(mode);
         const ScreenValues value{k, f, b, b.cwiseAbs()};
         bool certain = false;
-        checkInequalities(g, in, mode, value, [&certain](Checked v, Checked minimum, double unit) {
-            certain = (minimum.value - v.value - (minimum.error + v.error)) / unit > kConsistentViolation;
+        checkInequalities(g, in, mode, value, [&certain, &value](Checked v, Checked minimum, double unit) {
+            const double excess = minimum.value - v.value;
+            if (!(excess / unit > kConsistentViolation)) return true;  // undecided whatever the bound
+            certain = (excess - (value.getError(minimum) + value.getError(v))) / unit > kConsistentViolation;
             return !certain;
         });
         return certain;
@@ -800,7 +796,7 @@ TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckM
         out.solved.push_back(solved(q).value);
         const Checked s = screened(q);
         out.screened.push_back(s.value);
-        out.screenError.push_back(s.error);
+        out.screenError.push_back(screened.getError(s));
     }
     return out;
 }

@@ -148,9 +148,22 @@ public:
     TruckModeCache(const TruckModeCache&) = delete;
     TruckModeCache& operator=(const TruckModeCache&) = delete;
     const TruckGeometry& getGeometry() const { return geometry_; }
-    static int getIndex(const TruckMode& m);  ///< 0 … kModeCount − 1, in enumerateTruckModes() order
+    /// 0 … kModeCount − 1, in enumerateTruckModes() order.
+    static int getIndex(const TruckMode& m) {
+        const int sp = 3 * ((int(m.spring[0]) + 2) % 3) + (int(m.spring[1]) + 2) % 3;  // linear first
+        const int f = 3 * int(m.wedge[0]) + int(m.wedge[1]);
+        const int lat = 3 * int(m.lateralWedge) + int(m.gib);
+        return (((int(m.support) * 3 + int(m.wheels)) * 9 + sp) * 9 + f) * 9 + lat;
+    }
     /// The mode whose matrix m's is: slips up, gib +.
-    static TruckMode getMatrixClass(const TruckMode& m);
+    static TruckMode getMatrixClass(const TruckMode& m) {
+        TruckMode c = m;
+        for (WedgeState& w : c.wedge)
+            if (w == WedgeState::SlipDown) w = WedgeState::SlipUp;
+        if (c.lateralWedge == WedgeState::SlipDown) c.lateralWedge = WedgeState::SlipUp;
+        if (c.gib == GibContact::Negative) c.gib = GibContact::Positive;
+        return c;
+    }
     struct Factor;
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
 
