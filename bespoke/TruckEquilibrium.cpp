@@ -571,6 +571,26 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     return solveFactored(g, in, mode, k, P, f, b, substitution);
 }
 
+namespace {
+/// A⁻¹ (unscaled) from the factorization, every column at once: solveScaled's steps
+/// on the identity, each substitution a row operation over the factors' nonzero
+/// entries. For the screen's rows only: its rounding differs from solveScaled's, which
+/// the screen's error bound covers (test ReducedModel.ScreenErrorBoundCoversTheSolve).
+Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
+    Eigen::Matrix<double, N, N, Eigen::RowMajor> c = Eigen::Matrix<double, N, N, Eigen::RowMajor>::Zero();
+    for (int i = 0; i < N; ++i) c(f.p[i], i) = f.rowScale[i] > 0 ? 1 / f.rowScale[i] : 1.0;
+    for (int i = 1; i < N; ++i)
+        for (int k = f.lowerStart[i]; k < f.lowerStart[i + 1]; ++k) c.row(i) -= f.lowerValue[k] * c.row(f.lowerColumn[k]);
+    for (int i = N - 1; i >= 0; --i) {
+        for (int k = f.upperStart[i]; k < f.upperStart[i + 1]; ++k) c.row(i) -= f.upperValue[k] * c.row(f.upperColumn[k]);
+        c.row(i) /= f.lu(i, i);
+    }
+    Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse;
+    for (int i = 0; i < N; ++i) inverse.row(f.q[i]) = getColumnScale()[f.q[i]] * c.row(i);
+    return inverse;
+}
+}  // namespace
+
 // ---- TruckModeCache -------------------------------------------------------
 
 struct TruckModeCache::Factor : ModeFactor {};
@@ -611,18 +631,17 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     auto made = std::make_unique<Factor>();
     factorSystem(A, *made);
     if (made->invertible) {
-        Eigen::Matrix<double, N, N> inverse;
-        for (int r = 0; r < N; ++r)
-            inverse.col(r) = solveScaled(*made, Eigen::Matrix<double, N, 1>::Unit(r));
-        Eigen::Matrix<double, kCheckedCount, N> G = Eigen::Matrix<double, kCheckedCount, N>::Zero();
-        for (int q = 0; q < kCheckedCount; ++q) {
-            if (q < kRimGap) G(q, getCheckedUnknown(q)) = 1;
-            else G.row(q) = getCheckedKinematics(k, q).row;
-        }
+        const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(*made);
         made->checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
-        for (int q = 0; q < kCheckedCount; ++q)
+        for (int q = 0; q < kCheckedCount; ++q) {
+            if (q < kRimGap) {
+                made->checkRows.row(q) = inverse.row(getCheckedUnknown(q));
+                continue;
+            }
+            const Row& g = getCheckedKinematics(k, q).row;
             for (int j = 0; j < N; ++j)
-                if (G(q, j) != 0) made->checkRows.row(q) += G(q, j) * inverse.row(j);
+                if (g[j] != 0) made->checkRows.row(q) += g[j] * inverse.row(j);
+        }
     }
     Factor* expected = nullptr;
     if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
