@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <atomic>
 #include <bitset>
+#include <cstdlib>
 #include <cstring>
+#include <new>
+#include <type_traits>
+#include <sys/mman.h>
 #include <deque>
 #include <mutex>
 #include <cstdint>
@@ -595,7 +599,36 @@ Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
 
 struct TruckModeCache::Factor : ModeFactor {};
 
-TruckModeCache::TruckModeCache(const TruckGeometry& g) : geometry_(g), slots_(kModeCount) {}
+struct TruckModeCache::FactorArena {
+    static constexpr std::size_t kBlockBytes = std::size_t(2) << 20;
+    static constexpr std::size_t kSlotBytes = (sizeof(Factor) + 63) / 64 * 64;
+    static_assert(std::is_trivially_destructible_v<Factor> && kSlotBytes <= kBlockBytes);
+    std::mutex mutex;
+    std::vector<void*> blocks;
+    std::size_t used = kBlockBytes;  // bytes taken in the last block
+    /// A copy of `made` in the arena, kept until the arena is destroyed.
+    Factor* store(const Factor& made) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (used + kSlotBytes > kBlockBytes) {
+            void* block = std::aligned_alloc(kBlockBytes, kBlockBytes);
+            if (!block) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+            ::madvise(block, kBlockBytes, MADV_HUGEPAGE);  // advice only: 4 KB pages if refused
+#endif
+            blocks.push_back(block);
+            used = 0;
+        }
+        void* slot = static_cast<char*>(blocks.back()) + used;
+        used += kSlotBytes;
+        return new (slot) Factor(made);
+    }
+    ~FactorArena() {
+        for (void* block : blocks) std::free(block);
+    }
+};
+
+TruckModeCache::TruckModeCache(const TruckGeometry& g)
+    : geometry_(g), slots_(kModeCount), arena_(std::make_unique<FactorArena>()) {}
 
 std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeometry& g) {
     static_assert(sizeof(TruckGeometry) % sizeof(double) == 0, "TruckGeometry holds doubles alone (compared bytewise)");
@@ -614,9 +647,7 @@ std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeome
     return kept.back();
 }
 
-TruckModeCache::~TruckModeCache() {
-    for (auto& s : slots_) delete s.load(std::memory_order_relaxed);
-}
+TruckModeCache::~TruckModeCache() = default;  // the factorizations are trivially destructible, in arena_
 
 const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
     std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
@@ -628,24 +659,25 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     Eigen::Matrix<double, N, N> A;
     Eigen::Matrix<double, N, 1> b;
     assembleSystem(geometry_, in, mode, k, P, A, b);
-    auto made = std::make_unique<Factor>();
-    factorSystem(A, *made);
-    if (made->invertible) {
-        const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(*made);
-        made->checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
+    Factor made{};
+    factorSystem(A, made);
+    if (made.invertible) {
+        const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
+        made.checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
         for (int q = 0; q < kCheckedCount; ++q) {
             if (q < kRimGap) {
-                made->checkRows.row(q) = inverse.row(getCheckedUnknown(q));
+                made.checkRows.row(q) = inverse.row(getCheckedUnknown(q));
                 continue;
             }
             const Row& g = getCheckedKinematics(k, q).row;
             for (int j = 0; j < N; ++j)
-                if (g[j] != 0) made->checkRows.row(q) += g[j] * inverse.row(j);
+                if (g[j] != 0) made.checkRows.row(q) += g[j] * inverse.row(j);
         }
     }
+    Factor* stored = arena_->store(made);
     Factor* expected = nullptr;
-    if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
-    return *expected;  // another thread stored the same factorization first
+    if (slot.compare_exchange_strong(expected, stored, std::memory_order_acq_rel)) return *stored;
+    return *expected;  // another thread stored the same factorization first (this copy stays unused in the arena)
 }
 
 namespace {

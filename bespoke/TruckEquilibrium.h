@@ -168,8 +168,14 @@ public:
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
 
 private:
+    /// Where the factorizations live: blocks of 2 MB, huge pages where the system
+    /// gives them. Allocated one by one, the ~1 300 factorizations of one run cost a
+    /// page fault each on first touch, more than the factoring itself on a virtual
+    /// machine (bench/README.md, "Bespoke models").
+    struct FactorArena;
     TruckGeometry geometry_;
     mutable std::vector<std::atomic<Factor*>> slots_;
+    std::unique_ptr<FactorArena> arena_;
 };
 
 /// solveTruckMode with the cache's factorization (bit-identical).
