@@ -1,5 +1,7 @@
 #include "bespoke/TruckEquilibrium.h"
 
+#include "bespoke/FullPivotLu.h"
+
 #include "contacts/SpringGroupLaws.h"
 #include "mbmodel/CarSide.h"
 
@@ -334,19 +336,25 @@ const Eigen::Matrix<double, N, 1>& getColumnScale() {
     return colScale;
 }
 
-void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
-    // Equilibrate: unknowns in mm, mrad and 10 kN, then every row to unit max,
-    // so the rank test compares like with like (spring rows carry 1e7 N/m).
+/// Equilibrates A: unknowns in mm, mrad and 10 kN, then every row to unit max, so the
+/// rank test compares like with like (spring rows carry 1e7 N/m). rowScale: each
+/// row's largest |coefficient| before its division (0: the row is left as it is).
+Eigen::Matrix<double, N, N> scaleSystem(const Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, N, 1>& rowScale) {
     Eigen::Matrix<double, N, N> As = A * getColumnScale().asDiagonal();
     for (int r = 0; r < N; ++r) {
         const double m = As.row(r).cwiseAbs().maxCoeff();
-        f.rowScale[r] = m;
+        rowScale[r] = m;
         if (m > 0) As.row(r) /= m;
     }
-    const Eigen::FullPivLU<Eigen::Matrix<double, N, N>> lu(As);
+    return As;
+}
+
+void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
+    const FullPivotLu<N> lu(scaleSystem(A, f.rowScale));  // Eigen's FullPivLU, bit for bit
     f.invertible = lu.isInvertible();
-    f.lu = lu.matrixLU();
-    for (int i = 0; i < N; ++i) f.p[i] = int(lu.permutationP().indices()[i]), f.q[i] = int(lu.permutationQ().indices()[i]);
+    f.lu = lu.getMatrixLU();
+    f.p = lu.getRowPermutation();
+    f.q = lu.getColumnPermutation();
     f.compress();
 }
 
@@ -594,6 +602,17 @@ Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
     return inverse;
 }
 }  // namespace
+
+Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const TruckMode& mode) {
+    const TruckInputs in;  // A depends on the mode and the geometry only
+    const Kinematics k = makeKinematics(g, in);
+    std::array<Linear, 2> P;
+    for (int i : {0, 1}) P[i] = makeSpringForce(g, k.compression[i], mode.spring[i]);
+    Eigen::Matrix<double, N, N> A;
+    Eigen::Matrix<double, N, 1> b, rowScale;
+    assembleSystem(g, in, mode, k, P, A, b);
+    return scaleSystem(A, rowScale);
+}
 
 // ---- TruckModeCache -------------------------------------------------------
 

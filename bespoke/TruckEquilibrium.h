@@ -128,6 +128,10 @@ enum class TruckSubstitution { Sparse, Dense };
 TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode,
                              TruckSubstitution substitution = TruckSubstitution::Sparse);
 
+/// The mode's matrix as the solves factor it (FullPivotLu): unknowns in mm, mrad and
+/// 10 kN, each row divided by its largest |coefficient|.
+Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const TruckMode& mode);
+
 /// Per-mode factorizations of the truck's equations for one geometry. A mode's
 /// matrix depends on the mode and the geometry only (the inputs enter the right-hand
 /// side alone), so each matrix is factored once, on first use, and reused: the
