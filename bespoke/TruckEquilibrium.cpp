@@ -625,8 +625,8 @@ struct TruckModeCache::FactorArena {
     std::mutex mutex;
     std::vector<void*> blocks;
     std::size_t used = kBlockBytes;  // bytes taken in the last block
-    /// A copy of `made` in the arena, kept until the arena is destroyed.
-    Factor* store(const Factor& made) {
+    /// A default-initialized Factor in the arena, kept until the arena is destroyed.
+    Factor* allocate() {
         const std::lock_guard<std::mutex> lock(mutex);
         if (used + kSlotBytes > kBlockBytes) {
             void* block = std::aligned_alloc(kBlockBytes, kBlockBytes);
@@ -639,7 +639,7 @@ struct TruckModeCache::FactorArena {
         }
         void* slot = static_cast<char*>(blocks.back()) + used;
         used += kSlotBytes;
-        return new (slot) Factor(made);
+        return new (slot) Factor;
     }
     ~FactorArena() {
         for (void* block : blocks) std::free(block);
@@ -678,7 +678,7 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     Eigen::Matrix<double, N, N> A;
     Eigen::Matrix<double, N, 1> b;
     assembleSystem(geometry_, in, mode, k, P, A, b);
-    Factor made{};
+    Factor& made = *arena_->allocate();  // a thread that loses the race below leaves its copy unused
     factorSystem(A, made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
@@ -693,10 +693,9 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
                 if (g[j] != 0) made.checkRows.row(q) += g[j] * inverse.row(j);
         }
     }
-    Factor* stored = arena_->store(made);
     Factor* expected = nullptr;
-    if (slot.compare_exchange_strong(expected, stored, std::memory_order_acq_rel)) return *stored;
-    return *expected;  // another thread stored the same factorization first (this copy stays unused in the arena)
+    if (slot.compare_exchange_strong(expected, &made, std::memory_order_acq_rel)) return made;
+    return *expected;  // another thread stored the same factorization first
 }
 
 namespace {
