@@ -311,10 +311,10 @@ int main(int argc, char** argv) {
         const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
         fmt::print("\nreduced truck-mode search ({} s simulated, {:.3f} s wall, {:.3f} s CPU, {:.0f} sim s / CPU s):\n"
                    "  {} searches, {} modes solved ({:.2f} per search), {} ruled out unsolved by their choice bounds, "
-                   "{} by the screen, {} enumerations of every mode\n",
+                   "{} by their contacts' kinematics, {} by the screen, {} enumerations of every mode\n",
                    r.simTime, wall, cpu, r.simTime / cpu, st.modes.searches, st.modes.solves,
-                   double(st.modes.solves) / double(st.modes.searches), st.modes.skipped, st.modes.screened,
-                   st.modes.enumerations);
+                   double(st.modes.solves) / double(st.modes.searches), st.modes.skipped, st.modes.kinematic,
+                   st.modes.screened, st.modes.enumerations);
     }
     if (gOrbitCpuS.count(model_names::kEom) && gOrbitCpuS.count(model_names::kHalfCar))
         fmt::print("\norbit point at 13.5 mph (CPU s): eom {:.2f}, halfcar {:.2f}; halfcar / eom {:.2f}x\n",

@@ -19,6 +19,8 @@
 #include <memory>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 #include <fmt/format.h>
 
 namespace rockroll {
@@ -823,6 +825,113 @@ struct ChoiceBounds {
     }
 };
 
+/// z + α θ = β for two rows (α₁ ≠ α₂): (z, θ).
+std::pair<double, double> solvePair(double a1, double b1, double a2, double b2) {
+    const double theta = (b1 - b2) / (a1 - a2);
+    return {b1 - a1 * theta, theta};
+}
+
+constexpr double kKinematicRelativeError = 1e-9;
+
+/// The bolster position a support with two closed contacts fixes (their gap rows = 0; a
+/// gap row is −z_b − α θ_b + c), with the other contacts' gap rows.
+struct FixedBolster {
+    double z = 0, roll = 0;
+    std::array<const Linear*, 2> open{};
+    FixedBolster(const Kinematics& k, CarBodySupport support) {
+        std::array<const Linear*, 2> closed{};
+        int nc = 0, no = 0;
+        for (int i : {0, 1}) {
+            (closesRim(support, i) ? closed[size_t(nc++)] : open[size_t(no++)]) = &k.rimGap[i];
+            (closesSideBearing(support, i) ? closed[size_t(nc++)] : open[size_t(no++)]) = &k.padGap[i];
+        }
+        auto alpha = [](const Linear& gap) { return gap.row[TB] / gap.row[ZB]; };
+        std::tie(z, roll) = solvePair(alpha(*closed[0]), closed[0]->c, alpha(*closed[1]), closed[1]->c);
+    }
+};
+
+bool fixesBolster(CarBodySupport s) {
+    return s == CarBodySupport::TwoPointCenterPlate || s == CarBodySupport::SideBearingAndCornerLeft ||
+           s == CarBodySupport::SideBearingAndCornerRight;
+}
+
+/// Each side's compression Z where the bolster and the wheelset (both wheels on the
+/// rails: tread rows = 0) are fixed, and its error margin.
+KinematicCompressions calcCompressions(const Kinematics& k, const FixedBolster& bolster) {
+    const auto wheelset = solvePair(k.treadLift[0].row[TW], -k.treadLift[0].c, k.treadLift[1].row[TW], -k.treadLift[1].c);
+    KinematicCompressions out;
+    for (int i : {0, 1}) {
+        const Linear& c = k.compression[i];
+        const double terms[5] = {c.row[ZW] * wheelset.first, c.row[TW] * wheelset.second, c.row[ZB] * bolster.z,
+                                 c.row[TB] * bolster.roll, c.c};
+        double Z = 0, size = 0;
+        for (double t : terms) Z += t, size += std::abs(t);
+        out.value[size_t(i)] = Z;
+        out.margin[size_t(i)] = kKinematicRelativeError * size + kScreenLengthFloor;
+    }
+    return out;
+}
+
+/// Where a mode's closed contacts fix the bolster, and its wheels on the rails fix the
+/// wheelset, the checks of the open gaps, the spring segments and the wedges follow from the
+/// kinematics alone, before any solve:
+///   - two closed contacts (center plate two-point; side bearing and corner on one side)
+///     give z_b and θ_b from their two gap rows = 0; the open rim and pad gaps must be ≥ 0;
+///   - both wheels on the rails give z_w and θ_w from the two tread rows = 0;
+///   - with both, each side's compression Z is known, and with it the spring segment's
+///     interval, the slip direction Z − Z_old and a sticking wedge's Φ = k_b (Z − Z_a).
+/// A mode whose check is violated beyond kConsistentViolation plus an error margin is not
+/// consistent, so the first pass leaves it out unsolved, as it does the screen's (same
+/// answer, bit for bit). The margin (kKinematicRelativeError of the size of the terms, and the
+/// screen's floors) covers the distance between these values and a solve's, which satisfies
+/// the same rows up to its rounding (test ReducedModel.KinematicCompressionsMatchTheSolve).
+struct KinematicBounds {
+    std::array<bool, 8> supportOut{};  // open gaps certainly violated
+    std::array<std::array<std::array<std::array<bool, 3>, 3>, 2>, 8> sideOut{};  // [support][side][segment][wedge], both wheels on
+    KinematicBounds(const TruckGeometry& g, const TruckInputs& in, const Kinematics& k) {
+        using S = CarBodySupport;
+        const double lengthUnit = 1e-4, forceUnit = 1e4;
+        // "value ≥ minimum" certainly violated: (minimum − value − margin)/unit > tolerance.
+        auto out = [](double minimum, double value, double margin, double unit) {
+            return (minimum - value - margin) / unit > kConsistentViolation;
+        };
+        for (S support : {S::TwoPointCenterPlate, S::SideBearingAndCornerLeft, S::SideBearingAndCornerRight}) {
+            const size_t si = size_t(support);
+            const FixedBolster bolster(k, support);
+            for (const Linear* gap : bolster.open) {
+                const double zTerm = gap->row[ZB] * bolster.z, rollTerm = gap->row[TB] * bolster.roll;
+                const double margin =
+                    kKinematicRelativeError * (std::abs(zTerm) + std::abs(rollTerm) + std::abs(gap->c)) + kScreenLengthFloor;
+                supportOut[si] = supportOut[si] || out(0, zTerm + rollTerm + gap->c, margin, lengthUnit);
+            }
+            const KinematicCompressions Z = calcCompressions(k, bolster);
+            for (int i : {0, 1}) {
+                const double z = Z.value[size_t(i)], eZ = Z.margin[size_t(i)];
+                const std::array<bool, 3> segment = {out(z, 0, eZ, lengthUnit),  // free: Z ≤ 0
+                                                     out(0, z, eZ, lengthUnit) || out(z, g.travel, eZ, lengthUnit),
+                                                     out(g.travel, z, eZ, lengthUnit)};
+                const double dZ = z - in.compressionOld[i];
+                const double edZ = eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]);
+                const double phi = g.kBristle * (z - in.wedgeAnchor[i]);
+                const double ePhi = g.kBristle * (eZ + kKinematicRelativeError * std::abs(in.wedgeAnchor[i])) +
+                                    kKinematicRelativeError * std::abs(phi) + kScreenForceFloor;
+                const std::array<bool, 3> wedge = {out(std::abs(phi), g.Fv, ePhi, forceUnit),  // stick: |Φ| ≤ F_V
+                                                   out(dZ, 0, edZ, lengthUnit),                 // slip up: dZ ≤ 0
+                                                   out(0, dZ, edZ, lengthUnit)};                // slip down: dZ ≥ 0
+                for (size_t seg = 0; seg < 3; ++seg)
+                    for (size_t w = 0; w < 3; ++w) sideOut[si][size_t(i)][seg][w] = segment[seg] || wedge[w];
+            }
+        }
+    }
+    bool rulesOut(const TruckMode& m) const {
+        const size_t s = size_t(m.support);
+        if (supportOut[s]) return true;
+        if (!fixesBolster(m.support) || m.wheels != WheelContact::Both) return false;
+        return sideOut[s][0][size_t(m.spring[0])][size_t(m.wedge[0])] ||
+               sideOut[s][1][size_t(m.spring[1])][size_t(m.wedge[1])];
+    }
+};
+
 constexpr int kMaxNeighbours = 7 + 7 * 2;
 
 /// findNeighbourModes without allocating; returns the count.
@@ -846,6 +955,16 @@ int fillNeighbourModes(const TruckMode& m, std::array<TruckMode, kMaxNeighbours>
     return n;
 }
 }  // namespace
+
+std::optional<KinematicCompressions> calcKinematicCompressions(const TruckGeometry& g, const TruckInputs& in,
+                                                               CarBodySupport support) {
+    if (!fixesBolster(support)) return std::nullopt;
+    const Kinematics k = makeKinematics(g, in);
+    const FixedBolster bolster(k, support);
+    KinematicCompressions out = calcCompressions(k, bolster);
+    out.zBolster = bolster.z, out.rollBolster = bolster.roll;
+    return out;
+}
 
 TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache) {
     return SearchContext(cache.getGeometry(), in, cache).solve(mode);
@@ -923,12 +1042,17 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
                          bool screen, TruckSearchCounts& n, TruckSolution& found) {
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
+    const KinematicBounds kinematic(context.g, context.in, context.k);
     auto consider = [&](const TruckMode& m) {
         const size_t index = size_t(TruckModeCache::getIndex(m));
         if (seen.test(index)) return false;
         seen.set(index);
         if (bounds.getBound(m) > kConsistentViolation) {
             ++n.skipped;
+            return false;
+        }
+        if (screen && kinematic.rulesOut(m)) {
+            ++n.kinematic;
             return false;
         }
         if (screen && context.isCertainlyInconsistent(m)) {

@@ -49,6 +49,7 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -194,6 +195,18 @@ struct TruckCheckedQuantities {
 };
 TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache);
 
+/// The compressions (left, right) that a support with two closed contacts (center plate
+/// two-point, side bearing and corner on one side) and both wheels on the rails fix from the
+/// kinematics alone, and the margin the search allows them against a solve's; none for the
+/// other supports. The search's first pass leaves out, unsolved, a mode whose spring, wedge
+/// or open-gap check these values fail beyond the margin (TruckEquilibrium.cpp, KinematicBounds).
+struct KinematicCompressions {
+    std::array<double, 2> value{0, 0}, margin{0, 0};  ///< [m]
+    double zBolster = 0, rollBolster = 0;              ///< what the closed contacts fix [m, rad]
+};
+std::optional<KinematicCompressions> calcKinematicCompressions(const TruckGeometry& g, const TruckInputs& in,
+                                                               CarBodySupport support);
+
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
 
@@ -202,6 +215,7 @@ struct TruckSearchCounts {
     long searches = 0;      ///< findTruckEquilibrium calls
     long solves = 0;        ///< modes solved
     long skipped = 0;       ///< modes ruled out by their choice bound, unsolved
+    long kinematic = 0;     ///< modes ruled out by the kinematics of their closed contacts, unsolved
     long screened = 0;      ///< modes ruled out by the screen, unsolved
     long enumerations = 0;  ///< searches that reached the enumeration of every mode
 };
