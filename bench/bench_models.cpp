@@ -163,6 +163,23 @@ void sweepWorkflow(benchmark::State& state, const std::string& model, double fro
     state.counters["sim_s_per_cpu_s"] = simulated / cpu;
 }
 
+/// Every matrix class of the default car's truck factored into a fresh TruckModeCache (its
+/// factorization, the screen's rows and the arena's first touch): the cost a single
+/// reduced run pays for each class it meets.
+void factorEveryTruckClass(benchmark::State& state) {
+    const TruckGeometry g(getDefaultScenario().car);
+    std::vector<TruckMode> classes;
+    for (const TruckMode& m : enumerateTruckModes())
+        if (TruckModeCache::getMatrixClass(m) == m) classes.push_back(m);
+    for (auto _ : state) {
+        const TruckModeCache cache(g);
+        for (const TruckMode& m : classes) benchmark::DoNotOptimize(&cache.getFactor(m, TruckInputs{}));
+    }
+    state.counters["classes"] = double(classes.size());
+    state.counters["per_class"] = benchmark::Counter(double(classes.size()) * double(state.iterations()),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // One describing-function branch set as `rockroll steady scenarios/70ton-loaded.toml
 // --amplitude-in 0.75 --from-mph 10 --to-mph 25 --stability none --twin-periods 0
 // --no-sweep-starts` computes it (app/CommandResults.h calcSteady): the harmonic balance
@@ -253,6 +270,10 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark("workflow/reduced_study_100", [](benchmark::State& s) {
         sweepWorkflow(s, model_names::kReduced, 10, 29.8, 0.2, false);
     })->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+    benchmark::RegisterBenchmark("reduced/factor_every_class", factorEveryTruckClass)
+        ->Iterations(3)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
     benchmark::RegisterBenchmark("describing/branch_set_10_25mph", describingBranchSet)
         ->Iterations(3)
         ->Unit(benchmark::kSecond)
