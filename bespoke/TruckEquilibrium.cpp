@@ -605,15 +605,24 @@ Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
 }
 }  // namespace
 
-Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const TruckMode& mode) {
-    const TruckInputs in;  // A depends on the mode and the geometry only
-    const Kinematics k = makeKinematics(g, in);
+namespace {
+/// The mode's matrix A alone: it depends on the mode and the geometry only, `in` (with k
+/// its kinematics) fills b alone, which is discarded.
+Eigen::Matrix<double, N, N> assembleMatrix(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode,
+                                           const Kinematics& k) {
     std::array<Linear, 2> P;
     for (int i : {0, 1}) P[i] = makeSpringForce(g, k.compression[i], mode.spring[i]);
     Eigen::Matrix<double, N, N> A;
-    Eigen::Matrix<double, N, 1> b, rowScale;
+    Eigen::Matrix<double, N, 1> b;
     assembleSystem(g, in, mode, k, P, A, b);
-    return scaleSystem(A, rowScale);
+    return A;
+}
+}  // namespace
+
+Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const TruckMode& mode) {
+    const TruckInputs in;
+    Eigen::Matrix<double, N, 1> rowScale;
+    return scaleSystem(assembleMatrix(g, in, mode, makeKinematics(g, in)), rowScale);
 }
 
 // ---- TruckModeCache -------------------------------------------------------
@@ -673,15 +682,9 @@ TruckModeCache::~TruckModeCache() = default;  // the factorizations are triviall
 const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
     std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
-    // A depends on the mode and the geometry only; `in` only fills b, which is discarded.
-    const Kinematics k = makeKinematics(geometry_, in);
-    std::array<Linear, 2> P;
-    for (int i : {0, 1}) P[i] = makeSpringForce(geometry_, k.compression[i], mode.spring[i]);
-    Eigen::Matrix<double, N, N> A;
-    Eigen::Matrix<double, N, 1> b;
-    assembleSystem(geometry_, in, mode, k, P, A, b);
+    const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
     Factor& made = *arena_->allocate();  // a thread that loses the race below leaves its copy unused
-    factorSystem(A, made);
+    factorSystem(assembleMatrix(geometry_, in, mode, k), made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
         made.checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
@@ -798,16 +801,26 @@ struct ChoiceBounds {
         return gap > 0 ? std::max(0.0, gap / (a.unit + b.unit) - kBoundSlack) : 0.0;
     }
 
+    /// Where side i's spring segment ([SpringSegment]) and wedge state ([WedgeState]) ask
+    /// its compression Z to lie.
+    struct CompressionIntervals {
+        std::array<Interval, 3> spring, wedge;
+    };
+    static CompressionIntervals makeCompressionIntervals(const TruckGeometry& g, const TruckInputs& in, int i) {
+        constexpr double inf = std::numeric_limits<double>::infinity(), length = 1e-4, force = 1e4;
+        const double stick = g.Fv / g.kBristle;
+        return {{{{-inf, 0, length}, {0, g.travel, length}, {g.travel, inf, length}}},
+                {{{in.wedgeAnchor[i] - stick, in.wedgeAnchor[i] + stick, force / g.kBristle},
+                  {-inf, in.compressionOld[i], length},
+                  {in.compressionOld[i], inf, length}}}};
+    }
+
     ChoiceBounds(const TruckGeometry& g, const TruckInputs& in) {
         constexpr double inf = std::numeric_limits<double>::infinity(), length = 1e-4, force = 1e4;
         for (int i : {0, 1}) {
-            const Interval spring[3] = {{-inf, 0, length}, {0, g.travel, length}, {g.travel, inf, length}};
-            const double stick = g.Fv / g.kBristle;
-            const Interval wedge[3] = {{in.wedgeAnchor[i] - stick, in.wedgeAnchor[i] + stick, force / g.kBristle},
-                                       {-inf, in.compressionOld[i], length},
-                                       {in.compressionOld[i], inf, length}};
+            const CompressionIntervals z = makeCompressionIntervals(g, in, i);
             for (int s = 0; s < 3; ++s)
-                for (int w = 0; w < 3; ++w) vertical[i][s][w] = pairBound(spring[s], wedge[w]);
+                for (int w = 0; w < 3; ++w) vertical[i][s][w] = pairBound(z.spring[s], z.wedge[w]);
         }
         const double stickY = g.Fh / g.kBristleLateral;
         const Interval lateralWedge[3] = {
@@ -878,8 +891,8 @@ KinematicCompressions calcCompressions(const Kinematics& k, const FixedBolster& 
 ///   - two closed contacts (center plate two-point; side bearing and corner on one side)
 ///     give z_b and θ_b from their two gap rows = 0; the open rim and pad gaps must be ≥ 0;
 ///   - both wheels on the rails give z_w and θ_w from the two tread rows = 0;
-///   - with both, each side's compression Z is known, and with it the spring segment's
-///     interval, the slip direction Z − Z_old and a sticking wedge's Φ = k_b (Z − Z_a).
+///   - with both, each side's compression Z is known, and with it whether Z lies in the
+///     intervals its spring segment and wedge state ask of it (ChoiceBounds's intervals).
 /// A mode whose check is violated beyond kConsistentViolation plus an error margin is not
 /// consistent, so the first pass leaves it out unsolved, as it does the screen's (same
 /// answer, bit for bit). The margin (kKinematicRelativeError of the size of the terms, and the
@@ -890,11 +903,7 @@ struct KinematicBounds {
     std::array<std::array<std::array<std::array<bool, 3>, 3>, 2>, 8> sideOut{};  // [support][side][segment][wedge], both wheels on
     KinematicBounds(const TruckGeometry& g, const TruckInputs& in, const Kinematics& k) {
         using S = CarBodySupport;
-        const double lengthUnit = 1e-4, forceUnit = 1e4;
-        // "value ≥ minimum" certainly violated: (minimum − value − margin)/unit > tolerance.
-        auto out = [](double minimum, double value, double margin, double unit) {
-            return (minimum - value - margin) / unit > kConsistentViolation;
-        };
+        const double lengthUnit = 1e-4;
         for (S support : {S::TwoPointCenterPlate, S::SideBearingAndCornerLeft, S::SideBearingAndCornerRight}) {
             const size_t si = size_t(support);
             const FixedBolster bolster(k, support);
@@ -902,22 +911,25 @@ struct KinematicBounds {
                 const double zTerm = gap->row[ZB] * bolster.z, rollTerm = gap->row[TB] * bolster.roll;
                 const double margin =
                     kKinematicRelativeError * (std::abs(zTerm) + std::abs(rollTerm) + std::abs(gap->c)) + kScreenLengthFloor;
-                supportOut[si] = supportOut[si] || out(0, zTerm + rollTerm + gap->c, margin, lengthUnit);
+                // an open gap ≥ 0, certainly violated
+                supportOut[si] = supportOut[si] || (-(zTerm + rollTerm + gap->c) - margin) / lengthUnit > kConsistentViolation;
             }
             const KinematicCompressions Z = calcCompressions(k, bolster);
             for (int i : {0, 1}) {
                 const double z = Z.value[size_t(i)], eZ = Z.margin[size_t(i)];
-                const std::array<bool, 3> segment = {out(z, 0, eZ, lengthUnit),  // free: Z ≤ 0
-                                                     out(0, z, eZ, lengthUnit) || out(z, g.travel, eZ, lengthUnit),
-                                                     out(g.travel, z, eZ, lengthUnit)};
-                const double dZ = z - in.compressionOld[i];
-                const double edZ = eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]);
-                const double phi = g.kBristle * (z - in.wedgeAnchor[i]);
-                const double ePhi = g.kBristle * (eZ + kKinematicRelativeError * std::abs(in.wedgeAnchor[i])) +
-                                    kKinematicRelativeError * std::abs(phi) + kScreenForceFloor;
-                const std::array<bool, 3> wedge = {out(std::abs(phi), g.Fv, ePhi, forceUnit),  // stick: |Φ| ≤ F_V
-                                                   out(dZ, 0, edZ, lengthUnit),                 // slip up: dZ ≤ 0
-                                                   out(0, dZ, edZ, lengthUnit)};                // slip down: dZ ≥ 0
+                const ChoiceBounds::CompressionIntervals intervals = ChoiceBounds::makeCompressionIntervals(g, in, i);
+                // Z certainly outside an interval: by more than the margin [m], in the interval's unit.
+                auto outside = [&](const ChoiceBounds::Interval& interval, double margin) {
+                    return (std::max(interval.lo - z, z - interval.hi) - margin) / interval.unit > kConsistentViolation;
+                };
+                std::array<bool, 3> segment{}, wedge{};
+                for (size_t seg = 0; seg < 3; ++seg) segment[seg] = outside(intervals.spring[seg], eZ);
+                // The stick interval's ends are Z_a ± F_V/k_b; the slips' end is Z_old.
+                wedge[0] = outside(intervals.wedge[0], eZ + kKinematicRelativeError * (std::abs(in.wedgeAnchor[i]) +
+                                                                                       std::abs(z - in.wedgeAnchor[i])) +
+                                                           kScreenForceFloor / g.kBristle);
+                for (size_t w : {1, 2})
+                    wedge[w] = outside(intervals.wedge[w], eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]));
                 for (size_t seg = 0; seg < 3; ++seg)
                     for (size_t w = 0; w < 3; ++w) sideOut[si][size_t(i)][seg][w] = segment[seg] || wedge[w];
             }
