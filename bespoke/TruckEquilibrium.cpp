@@ -885,6 +885,176 @@ KinematicCompressions calcCompressions(const Kinematics& k, const FixedBolster& 
     return out;
 }
 
+/// The modes whose closed contacts and wheels on the rails leave the bolster and the
+/// wheelset one degree of freedom t between them:
+///   - a support with two closed contacts (the bolster fixed) and one wheel lifted: the
+///     wheel on the rail holds the wheelset to a roll about it, t = θ_w (families 0–5:
+///     support two-point, side bearing and corner L, R; left, right wheel lifted);
+///   - a support with one closed contact (corner, side bearing) and both wheels on the
+///     rails (the wheelset fixed): the contact holds the bolster to a roll about it,
+///     t = θ_b (families 6–9: corner L, R, side bearing L, R).
+/// Every kinematic check of such a mode (the lifted tread ≥ 0, the open gaps ≥ 0, each
+/// side's compression Z in its spring segment's and wedge's intervals) is affine in t, so
+/// each asks t to lie in an interval. A mode whose intervals do not meet cannot be
+/// consistent, whatever its forces: the first pass leaves it out unsolved.
+///
+/// The intervals are widened by what a consistent mode may miss them by (kConsistentViolation
+/// in the check's unit) and by an error margin for the distance between a check's value at
+/// the solved t and the solved value: kKinematicRelativeError of the size of the terms,
+/// taken at |t| = kFamilyParameterBound, plus the screen's floors (test
+/// ReducedModel.OneParameterFamiliesMatchTheSolve). A margin that grows with |t| covers
+/// every consistent t only where some interval of the mode is two-sided and lies within
+/// |t| ≤ kFamilyParameterBound with its margin: then every t that meets it within its
+/// own margin, at any |t|, lies there too (the margin grows by 1e-9 of |t|). So a mode is
+/// ruled out only when its intervals do not meet and one of them is such.
+constexpr int kOneParameterFamilies = 10;
+constexpr double kFamilyParameterBound = 1.0;  ///< [rad]
+
+/// The family of (support, wheels), or −1.
+int getOneParameterFamily(CarBodySupport s, WheelContact w) {
+    using S = CarBodySupport;
+    if (fixesBolster(s) && w != WheelContact::Both) {
+        const int support = s == S::TwoPointCenterPlate ? 0 : s == S::SideBearingAndCornerLeft ? 1 : 2;
+        return 2 * support + (w == WheelContact::LiftLeft ? 0 : 1);
+    }
+    if (w != WheelContact::Both) return -1;
+    switch (s) {
+    case S::CornerLeft: return 6;
+    case S::CornerRight: return 7;
+    case S::SideBearingLeft: return 8;
+    case S::SideBearingRight: return 9;
+    default: return -1;
+    }
+}
+
+struct OneParameterFamily {
+    /// An interval of t, widened; bounded: two-sided and within ±kFamilyParameterBound.
+    struct Range {
+        double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+        bool bounded = false;
+    };
+    /// A kinematic quantity along the family: a + b·t, and the size of the terms of a.
+    struct Affine {
+        double a = 0, b = 0, size = 0;
+    };
+    Range base;  ///< the lifted tread, the open gaps
+    std::array<std::array<std::array<Range, 3>, 3>, 2> side{};  ///< [side][spring segment][wedge state]
+    /// The quantities along the family and their margins at |t| = kFamilyParameterBound:
+    /// the checks "≥ 0" (the lifted tread, or the open gaps) and each side's compression.
+    std::array<Affine, 3> atLeastZero{};
+    std::array<double, 3> atLeastZeroMargin{};
+    std::array<int, 3> atLeastZeroQuantity{};  ///< its CheckedQuantity
+    int atLeastZeroCount = 0;
+    std::array<Affine, 2> compression{};
+    std::array<double, 2> compressionMargin{};
+
+    OneParameterFamily(const TruckGeometry& g, const TruckInputs& in, const Kinematics& k, int family) {
+        using S = CarBodySupport;
+        // The positions (z_b, θ_b, z_w, θ_w) along the family: p0 + t·d.
+        std::array<double, 4> p0{}, d{};
+        std::array<const Linear*, 3> checks{};
+        if (family < 6) {
+            const S support = family < 2 ? S::TwoPointCenterPlate : family < 4 ? S::SideBearingAndCornerLeft
+                                                                               : S::SideBearingAndCornerRight;
+            const int lifted = family % 2, onRail = 1 - lifted;
+            const FixedBolster bolster(k, support);
+            const Linear& tread = k.treadLift[size_t(onRail)];  // = 0: z_w = (−c − row_θw·t)/row_zw
+            p0 = {bolster.z, bolster.roll, -tread.c / tread.row[ZW], 0};
+            d = {0, 0, -tread.row[TW] / tread.row[ZW], 1};
+            atLeastZeroQuantity[size_t(atLeastZeroCount)] = kTreadLift + lifted;
+            checks[size_t(atLeastZeroCount++)] = &k.treadLift[size_t(lifted)];  // the open gaps do not move: supportOut
+        } else {
+            const std::pair<double, double> wheelset =
+                solvePair(k.treadLift[0].row[TW], -k.treadLift[0].c, k.treadLift[1].row[TW], -k.treadLift[1].c);
+            const int closedSide = family % 2;
+            const bool corner = family < 8;
+            const Linear& closed = corner ? k.rimGap[size_t(closedSide)] : k.padGap[size_t(closedSide)];
+            p0 = {-closed.c / closed.row[ZB], 0, wheelset.first, wheelset.second};  // gap = 0: z_b = (−c − row_θb·t)/row_zb
+            d = {-closed.row[TB] / closed.row[ZB], 1, 0, 0};
+            for (int i : {0, 1}) {
+                if (!(corner && i == closedSide)) {
+                    atLeastZeroQuantity[size_t(atLeastZeroCount)] = kRimGap + i;
+                    checks[size_t(atLeastZeroCount++)] = &k.rimGap[size_t(i)];
+                }
+                if (!(!corner && i == closedSide)) {
+                    atLeastZeroQuantity[size_t(atLeastZeroCount)] = kPadGap + i;
+                    checks[size_t(atLeastZeroCount++)] = &k.padGap[size_t(i)];
+                }
+            }
+        }
+        auto along = [&](const Linear& q) {
+            Affine f;
+            const int unknowns[4] = {ZB, TB, ZW, TW};
+            f.a = q.c, f.size = std::abs(q.c);
+            for (int u = 0; u < 4; ++u) {
+                const double term = q.row[unknowns[u]] * p0[size_t(u)];
+                f.a += term, f.size += std::abs(term), f.b += q.row[unknowns[u]] * d[size_t(u)];
+            }
+            return f;
+        };
+        auto margin = [](const Affine& f) {
+            return kKinematicRelativeError * (f.size + std::abs(f.b) * kFamilyParameterBound) + kScreenLengthFloor;
+        };
+        const double length = 1e-4;
+        for (int j = 0; j < atLeastZeroCount; ++j) {
+            const Affine f = along(*checks[size_t(j)]);
+            atLeastZero[size_t(j)] = f, atLeastZeroMargin[size_t(j)] = margin(f);
+            base = intersect(base, makeZRange(f, -(margin(f) + kConsistentViolation * length),
+                                              std::numeric_limits<double>::infinity()));
+        }
+        for (int i : {0, 1}) {
+            const Affine Z = along(k.compression[size_t(i)]);
+            const double eZ = margin(Z), zMax = Z.size + std::abs(Z.b) * kFamilyParameterBound;  // |Z| over the range
+            compression[size_t(i)] = Z, compressionMargin[size_t(i)] = eZ;
+            const ChoiceBounds::CompressionIntervals intervals = ChoiceBounds::makeCompressionIntervals(g, in, i);
+            // KinematicBounds's margins of the wedge checks, with |Z| at its largest.
+            const double wedgeMargin[3] = {
+                eZ + kKinematicRelativeError * (2 * std::abs(in.wedgeAnchor[i]) + zMax) + kScreenForceFloor / g.kBristle,
+                eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]),
+                eZ + kKinematicRelativeError * std::abs(in.compressionOld[i])};
+            for (size_t seg = 0; seg < 3; ++seg) {
+                const ChoiceBounds::Interval& spring = intervals.spring[seg];
+                const double springSlack = eZ + kConsistentViolation * spring.unit;
+                for (size_t w = 0; w < 3; ++w) {
+                    const ChoiceBounds::Interval& wedge = intervals.wedge[w];
+                    const double wedgeSlack = wedgeMargin[w] + kConsistentViolation * wedge.unit;
+                    side[size_t(i)][seg][w] = makeZRange(Z, std::max(spring.lo - springSlack, wedge.lo - wedgeSlack),
+                                                         std::min(spring.hi + springSlack, wedge.hi + wedgeSlack));
+                }
+            }
+        }
+    }
+
+    static Range intersect(const Range& x, const Range& y) {
+        return {std::max(x.lo, y.lo), std::min(x.hi, y.hi), x.bounded || y.bounded};
+    }
+    /// The t where lo ≤ a + b·t ≤ hi (the bounds already widened).
+    static Range makeZRange(const Affine& f, double lo, double hi) {
+        Range r;
+        if (std::isnan(lo) || std::isnan(hi) || !std::isfinite(f.a) || !std::isfinite(f.b)) return r;  // decides nothing
+        if (!(lo <= hi)) {  // empty already: any t fails; not bounded, so alone it rules nothing out
+            r.lo = std::numeric_limits<double>::infinity(), r.hi = -std::numeric_limits<double>::infinity();
+            return r;
+        }
+        if (f.b == 0) {
+            if (f.a < lo || f.a > hi) r.lo = std::numeric_limits<double>::infinity(), r.hi = -r.lo;
+            return r;
+        }
+        double t1 = (lo - f.a) / f.b, t2 = (hi - f.a) / f.b;
+        if (f.b < 0) std::swap(t1, t2);
+        if (std::isnan(t1) || std::isnan(t2)) return Range{};
+        r.lo = t1, r.hi = t2;
+        r.bounded = std::isfinite(t1) && std::isfinite(t2) && t1 >= -kFamilyParameterBound && t2 <= kFamilyParameterBound;
+        return r;
+    }
+    bool rulesOut(const TruckMode& m) const {
+        const Range& r0 = side[0][size_t(m.spring[0])][size_t(m.wedge[0])];
+        const Range& r1 = side[1][size_t(m.spring[1])][size_t(m.wedge[1])];
+        if (!(r0.bounded || r1.bounded)) return false;
+        return std::max({base.lo, r0.lo, r1.lo}) > std::min({base.hi, r0.hi, r1.hi});
+    }
+};
+
 /// Where a mode's closed contacts fix the bolster, and its wheels on the rails fix the
 /// wheelset, the checks of the open gaps, the spring segments and the wedges follow from the
 /// kinematics alone, before any solve:
@@ -901,7 +1071,8 @@ KinematicCompressions calcCompressions(const Kinematics& k, const FixedBolster& 
 struct KinematicBounds {
     std::array<bool, 8> supportOut{};  // open gaps certainly violated
     std::array<std::array<std::array<std::array<bool, 3>, 3>, 2>, 8> sideOut{};  // [support][side][segment][wedge], both wheels on
-    KinematicBounds(const TruckGeometry& g, const TruckInputs& in, const Kinematics& k) {
+    KinematicBounds(const TruckGeometry& geometry, const TruckInputs& inputs, const Kinematics& kinematics)
+        : g(geometry), in(inputs), k(kinematics) {
         using S = CarBodySupport;
         const double lengthUnit = 1e-4;
         for (S support : {S::TwoPointCenterPlate, S::SideBearingAndCornerLeft, S::SideBearingAndCornerRight}) {
@@ -935,12 +1106,22 @@ struct KinematicBounds {
             }
         }
     }
-    bool rulesOut(const TruckMode& m) const {
+    /// The one-parameter families, each made when a mode of it is first asked about.
+    const TruckGeometry& g;
+    const TruckInputs& in;
+    const Kinematics& k;
+    std::array<std::optional<OneParameterFamily>, kOneParameterFamilies> families;
+    bool rulesOut(const TruckMode& m) {
         const size_t s = size_t(m.support);
         if (supportOut[s]) return true;
-        if (!fixesBolster(m.support) || m.wheels != WheelContact::Both) return false;
-        return sideOut[s][0][size_t(m.spring[0])][size_t(m.wedge[0])] ||
-               sideOut[s][1][size_t(m.spring[1])][size_t(m.wedge[1])];
+        if (fixesBolster(m.support) && m.wheels == WheelContact::Both)
+            return sideOut[s][0][size_t(m.spring[0])][size_t(m.wedge[0])] ||
+                   sideOut[s][1][size_t(m.spring[1])][size_t(m.wedge[1])];
+        const int f = getOneParameterFamily(m.support, m.wheels);
+        if (f < 0) return false;
+        std::optional<OneParameterFamily>& family = families[size_t(f)];
+        if (!family) family.emplace(g, in, k, f);
+        return family->rulesOut(m);
     }
 };
 
@@ -976,6 +1157,33 @@ std::optional<KinematicCompressions> calcKinematicCompressions(const TruckGeomet
     KinematicCompressions out = calcCompressions(k, bolster);
     out.zBolster = bolster.z, out.rollBolster = bolster.roll;
     return out;
+}
+
+std::optional<OneParameterKinematics> calcOneParameterKinematics(const TruckGeometry& g, const TruckInputs& in,
+                                                                 const TruckMode& mode, double t) {
+    const int f = getOneParameterFamily(mode.support, mode.wheels);
+    if (f < 0) return std::nullopt;
+    const OneParameterFamily family(g, in, makeKinematics(g, in), f);
+    OneParameterKinematics out;
+    out.wheelsetRoll = f < 6;
+    for (int j = 0; j < family.atLeastZeroCount; ++j) {
+        const auto& q = family.atLeastZero[size_t(j)];
+        out.atLeastZero.push_back(q.a + q.b * t);
+        out.atLeastZeroMargin.push_back(family.atLeastZeroMargin[size_t(j)]);
+        out.atLeastZeroQuantity.push_back(family.atLeastZeroQuantity[size_t(j)]);
+    }
+    for (int i : {0, 1}) {
+        const auto& Z = family.compression[size_t(i)];
+        out.compression[size_t(i)] = Z.a + Z.b * t;
+        out.compressionMargin[size_t(i)] = family.compressionMargin[size_t(i)];
+    }
+    return out;
+}
+
+bool isRuledOutByKinematics(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode) {
+    const Kinematics k = makeKinematics(g, in);
+    KinematicBounds bounds(g, in, k);
+    return bounds.rulesOut(mode);
 }
 
 TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache) {
@@ -1054,7 +1262,7 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
                          bool screen, TruckSearchCounts& n, TruckSolution& found) {
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
-    const KinematicBounds kinematic(context.g, context.in, context.k);
+    KinematicBounds kinematic(context.g, context.in, context.k);
     auto consider = [&](const TruckMode& m) {
         const size_t index = size_t(TruckModeCache::getIndex(m));
         if (seen.test(index)) return false;

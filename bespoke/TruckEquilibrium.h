@@ -207,6 +207,27 @@ struct KinematicCompressions {
 std::optional<KinematicCompressions> calcKinematicCompressions(const TruckGeometry& g, const TruckInputs& in,
                                                                CarBodySupport support);
 
+/// The modes whose closed contacts and wheels on the rails leave the bolster and the wheelset
+/// one degree of freedom t: a support with two closed contacts and one wheel lifted (t = θ_w,
+/// the wheelset rolling about the wheel on the rail), or one closed contact and both wheels on
+/// the rails (t = θ_b, the bolster rolling about the contact). The quantities the search's
+/// first pass checks along it, at t: the checks "≥ 0" (the lifted tread, or the open gaps;
+/// atLeastZeroQuantity indexes TruckCheckedQuantities) and the compressions, each with the
+/// margin the search allows them against a solve's for |t| ≤ 1 rad (TruckEquilibrium.cpp,
+/// OneParameterFamily). None for the other modes.
+struct OneParameterKinematics {
+    bool wheelsetRoll = false;  ///< t is θ_w (else θ_b)
+    std::vector<double> atLeastZero, atLeastZeroMargin;  ///< [m]
+    std::vector<int> atLeastZeroQuantity;
+    std::array<double, 2> compression{0, 0}, compressionMargin{0, 0};  ///< [m]
+};
+std::optional<OneParameterKinematics> calcOneParameterKinematics(const TruckGeometry& g, const TruckInputs& in,
+                                                                 const TruckMode& mode, double t);
+
+/// Whether the search's first pass leaves the mode out unsolved on its kinematics alone
+/// (calcKinematicCompressions, calcOneParameterKinematics): then it is not consistent.
+bool isRuledOutByKinematics(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode);
+
 /// The modes that differ from m in exactly one choice.
 std::vector<TruckMode> findNeighbourModes(const TruckMode& m);
 
