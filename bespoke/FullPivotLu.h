@@ -64,6 +64,22 @@ private:
         for (; i < m; ++i) best = std::max(best, std::abs(x[i]));
         return best;
     }
+    /// Whether one of m values is −0.
+    static bool hasNegativeZero(const double* x, int m) {
+        int i = 0;
+        bool found = false;
+#if defined(__SSE2__)
+        const __m128d sign = _mm_set1_pd(-0.0), zero = _mm_setzero_pd();
+        __m128d v = _mm_setzero_pd();  // sign bits of the entries equal to zero
+        for (; i + 1 < m; i += 2) {
+            const __m128d x2 = _mm_loadu_pd(x + i);
+            v = _mm_or_pd(v, _mm_and_pd(_mm_cmpeq_pd(x2, zero), _mm_and_pd(x2, sign)));
+        }
+        found = _mm_movemask_pd(v) != 0;
+#endif
+        for (; i < m; ++i) found = found || (x[i] == 0 && std::signbit(x[i]));
+        return found;
+    }
     /// y_i −= r·x_i: a product, then a difference, per element (no fused multiply-add).
     static void subtractMultiple(double* y, double r, const double* x, int m) {
         int i = 0;
@@ -77,6 +93,10 @@ private:
 
     void compute() {
         double* a = lu_.data();  // a[j·n + i] = A(i, j)
+        // Without a −0 in A the corner never holds one (y − r·x is −0 only for y = −0; the
+        // divisions write L, outside the corner), so a column whose multiplier a_kj is ±0
+        // is left as it is: y − (±0) = y for every y but −0. With one, every column is updated.
+        const bool negativeZero = hasNegativeZero(a, n * n);
         std::array<int, n> rowSwap{}, colSwap{};
         nonzeroPivots_ = n;
         maxPivot_ = 0;
@@ -107,6 +127,7 @@ private:
             for (int i = k + 1; i < n; ++i) colK[i] /= pivot;
             for (int j = k + 1; j < n; ++j) {
                 double* col = a + j * n;
+                if (col[k] == 0 && !negativeZero) continue;
                 subtractMultiple(col + k + 1, col[k], colK + k + 1, n - k - 1);
             }
         }
