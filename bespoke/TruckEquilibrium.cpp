@@ -938,7 +938,10 @@ struct OneParameterFamily {
         double a = 0, b = 0, size = 0;
     };
     Range base;  ///< the lifted tread, the open gaps
-    std::array<std::array<std::array<Range, 3>, 3>, 2> side{};  ///< [side][spring segment][wedge state]
+    std::array<std::array<std::array<Range, 3>, 3>, 2> side{};  ///< [side][spring segment][wedge state], as made
+    std::uint32_t made = 0;                                      ///< which of side are made (bit 9i + 3·segment + wedge)
+    /// Each side's widened Z intervals (lo, hi) of its spring segments and of its wedge states.
+    std::array<std::array<std::array<double, 2>, 3>, 2> springZ{}, wedgeZ{};
     /// The quantities along the family and their margins at |t| = kFamilyParameterBound:
     /// the checks "≥ 0" (the lifted tread, or the open gaps) and each side's compression.
     std::array<Affine, 3> atLeastZero{};
@@ -1012,17 +1015,28 @@ struct OneParameterFamily {
                 eZ + kKinematicRelativeError * (2 * std::abs(in.wedgeAnchor[i]) + zMax) + kScreenForceFloor / g.kBristle,
                 eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]),
                 eZ + kKinematicRelativeError * std::abs(in.compressionOld[i])};
-            for (size_t seg = 0; seg < 3; ++seg) {
-                const ChoiceBounds::Interval& spring = intervals.spring[seg];
+            for (size_t j = 0; j < 3; ++j) {
+                const ChoiceBounds::Interval& spring = intervals.spring[j];
                 const double springSlack = eZ + kConsistentViolation * spring.unit;
-                for (size_t w = 0; w < 3; ++w) {
-                    const ChoiceBounds::Interval& wedge = intervals.wedge[w];
-                    const double wedgeSlack = wedgeMargin[w] + kConsistentViolation * wedge.unit;
-                    side[size_t(i)][seg][w] = makeZRange(Z, std::max(spring.lo - springSlack, wedge.lo - wedgeSlack),
-                                                         std::min(spring.hi + springSlack, wedge.hi + wedgeSlack));
-                }
+                springZ[size_t(i)][j] = {spring.lo - springSlack, spring.hi + springSlack};
+                const ChoiceBounds::Interval& wedge = intervals.wedge[j];
+                const double wedgeSlack = wedgeMargin[j] + kConsistentViolation * wedge.unit;
+                wedgeZ[size_t(i)][j] = {wedge.lo - wedgeSlack, wedge.hi + wedgeSlack};
             }
         }
+    }
+
+    /// Side i's range for a spring segment and a wedge state, made on first use.
+    const Range& getSide(int i, SpringSegment segment, WedgeState wedge) {
+        const size_t seg = size_t(segment), w = size_t(wedge);
+        const std::uint32_t bit = std::uint32_t(1) << (9 * i + 3 * int(seg) + int(w));
+        Range& r = side[size_t(i)][seg][w];
+        if (!(made & bit)) {
+            r = makeZRange(compression[size_t(i)], std::max(springZ[size_t(i)][seg][0], wedgeZ[size_t(i)][w][0]),
+                           std::min(springZ[size_t(i)][seg][1], wedgeZ[size_t(i)][w][1]));
+            made |= bit;
+        }
+        return r;
     }
 
     static Range intersect(const Range& x, const Range& y) {
@@ -1047,9 +1061,9 @@ struct OneParameterFamily {
         r.bounded = std::isfinite(t1) && std::isfinite(t2) && t1 >= -kFamilyParameterBound && t2 <= kFamilyParameterBound;
         return r;
     }
-    bool rulesOut(const TruckMode& m) const {
-        const Range& r0 = side[0][size_t(m.spring[0])][size_t(m.wedge[0])];
-        const Range& r1 = side[1][size_t(m.spring[1])][size_t(m.wedge[1])];
+    bool rulesOut(const TruckMode& m) {
+        const Range& r0 = getSide(0, m.spring[0], m.wedge[0]);
+        const Range& r1 = getSide(1, m.spring[1], m.wedge[1]);
         if (!(r0.bounded || r1.bounded)) return false;
         return std::max({base.lo, r0.lo, r1.lo}) > std::min({base.hi, r0.hi, r1.hi});
     }
@@ -1110,7 +1124,10 @@ struct KinematicBounds {
     const TruckGeometry& g;
     const TruckInputs& in;
     const Kinematics& k;
-    std::array<std::optional<OneParameterFamily>, kOneParameterFamilies> families;
+    /// Raw storage: constructing ten empty families per search cost more than the bounds save.
+    static_assert(std::is_trivially_destructible_v<OneParameterFamily>);
+    alignas(OneParameterFamily) unsigned char familyStorage[kOneParameterFamilies][sizeof(OneParameterFamily)];
+    std::uint32_t familiesMade = 0;
     bool rulesOut(const TruckMode& m) {
         const size_t s = size_t(m.support);
         if (supportOut[s]) return true;
@@ -1119,9 +1136,12 @@ struct KinematicBounds {
                    sideOut[s][1][size_t(m.spring[1])][size_t(m.wedge[1])];
         const int f = getOneParameterFamily(m.support, m.wheels);
         if (f < 0) return false;
-        std::optional<OneParameterFamily>& family = families[size_t(f)];
-        if (!family) family.emplace(g, in, k, f);
-        return family->rulesOut(m);
+        void* storage = familyStorage[f];
+        if (!(familiesMade & (1u << f))) {
+            new (storage) OneParameterFamily(g, in, k, f);
+            familiesMade |= 1u << f;
+        }
+        return std::launder(static_cast<OneParameterFamily*>(storage))->rulesOut(m);
     }
 };
 
@@ -1243,6 +1263,50 @@ bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
     return false;
 }
 
+/// A mode in 8 bytes, for the search orders.
+struct PackedMode {
+    std::uint8_t support, wheels, wedge0, wedge1, spring0, spring1, lateralWedge, gib;
+    static PackedMode pack(const TruckMode& m) {
+        return {std::uint8_t(m.support), std::uint8_t(m.wheels), std::uint8_t(m.wedge[0]), std::uint8_t(m.wedge[1]),
+                std::uint8_t(m.spring[0]), std::uint8_t(m.spring[1]), std::uint8_t(m.lateralWedge), std::uint8_t(m.gib)};
+    }
+    TruckMode unpack() const {
+        TruckMode m;
+        m.support = CarBodySupport(support), m.wheels = WheelContact(wheels);
+        m.wedge = {WedgeState(wedge0), WedgeState(wedge1)};
+        m.spring = {SpringSegment(spring0), SpringSegment(spring1)};
+        m.lateralWedge = WedgeState(lateralWedge), m.gib = GibContact(gib);
+        return m;
+    }
+};
+
+/// The neighbour part of the search order from `previous` (visitNeighbours) with each mode
+/// once, where it first comes, and without `previous`: the modes the first pass considers,
+/// in its order. It depends on `previous` alone, so each is made once per process, on first
+/// use (lock-free slots; test ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
+const std::vector<PackedMode>& getNeighbourOrder(const TruckMode& previous) {
+    struct Orders {
+        std::vector<std::atomic<const std::vector<PackedMode>*>> slots{size_t(TruckModeCache::kModeCount)};
+        ~Orders() {
+            for (auto& slot : slots) delete slot.load();
+        }
+    };
+    static Orders orders;
+    std::atomic<const std::vector<PackedMode>*>& slot = orders.slots[size_t(TruckModeCache::getIndex(previous))];
+    if (const std::vector<PackedMode>* order = slot.load(std::memory_order_acquire)) return *order;
+    auto made = std::make_unique<std::vector<PackedMode>>();
+    std::bitset<TruckModeCache::kModeCount> seen;
+    seen.set(size_t(TruckModeCache::getIndex(previous)));
+    visitNeighbours(previous, [&](const TruckMode& m) {
+        const size_t index = size_t(TruckModeCache::getIndex(m));
+        if (!seen.test(index)) seen.set(index), made->push_back(PackedMode::pack(m));
+        return false;
+    });
+    const std::vector<PackedMode>* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
+    return *expected;  // another thread made the same order first
+}
+
 /// The search order's first consistent mode, or false when no mode is consistent.
 /// Every mode of the order (the previous mode, its one-choice neighbours, their
 /// one-choice neighbours, every mode) is either consistent or not whatever came
@@ -1260,13 +1324,8 @@ bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
 /// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
 bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bounds, const TruckMode& previous,
                          bool screen, TruckSearchCounts& n, TruckSolution& found) {
-    std::bitset<TruckModeCache::kModeCount> seen;
-    seen.set(size_t(TruckModeCache::getIndex(previous)));
     KinematicBounds kinematic(context.g, context.in, context.k);
-    auto consider = [&](const TruckMode& m) {
-        const size_t index = size_t(TruckModeCache::getIndex(m));
-        if (seen.test(index)) return false;
-        seen.set(index);
+    auto test = [&](const TruckMode& m) {
         if (bounds.getBound(m) > kConsistentViolation) {
             ++n.skipped;
             return false;
@@ -1284,7 +1343,19 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
         found = context.solve(m);
         return true;
     };
-    if (visitNeighbours(previous, consider)) return true;
+    const std::vector<PackedMode>& neighbours = getNeighbourOrder(previous);
+    for (const PackedMode& m : neighbours)
+        if (test(m.unpack())) return true;
+    // The enumeration leaves out what the neighbour part considered.
+    std::bitset<TruckModeCache::kModeCount> seen;
+    seen.set(size_t(TruckModeCache::getIndex(previous)));
+    for (const PackedMode& m : neighbours) seen.set(size_t(TruckModeCache::getIndex(m.unpack())));
+    auto consider = [&](const TruckMode& m) {
+        const size_t index = size_t(TruckModeCache::getIndex(m));
+        if (seen.test(index)) return false;
+        seen.set(index);
+        return test(m);
+    };
     ++n.enumerations;
     // enumerateTruckModes' order, with the bound's factors tested first.
     std::array<std::array<std::array<bool, 3>, 3>, 2> sideOk{};

@@ -155,7 +155,8 @@ public:
     const TruckGeometry& getGeometry() const { return geometry_; }
     /// 0 … kModeCount − 1, in enumerateTruckModes() order.
     static int getIndex(const TruckMode& m) {
-        const int sp = 3 * ((int(m.spring[0]) + 2) % 3) + (int(m.spring[1]) + 2) % 3;  // linear first
+        constexpr int linearFirst[3] = {2, 0, 1};  // free, linear, bottomed -> 2, 0, 1
+        const int sp = 3 * linearFirst[int(m.spring[0])] + linearFirst[int(m.spring[1])];
         const int f = 3 * int(m.wedge[0]) + int(m.wedge[1]);
         const int lat = 3 * int(m.lateralWedge) + int(m.gib);
         return (((int(m.support) * 3 + int(m.wheels)) * 9 + sp) * 9 + f) * 9 + lat;
