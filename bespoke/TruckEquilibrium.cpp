@@ -252,10 +252,12 @@ struct ModeFactor {
     std::array<std::uint8_t, N + 1> lowerStart{}, upperStart{};
     std::array<std::uint8_t, N * (N - 1) / 2> lowerColumn{}, upperColumn{};
     std::array<double, N * (N - 1) / 2> lowerValue{}, upperValue{};
+    std::array<double, N> diagonal{};  ///< U's, beside the nonzeros (a solve touches no row of lu)
 
     void compress() {
         int nl = 0, nu = 0;
         for (int i = 0; i < N; ++i) {
+            diagonal[i] = lu(i, i);
             lowerStart[i] = std::uint8_t(nl), upperStart[i] = std::uint8_t(nu);
             for (int j = 0; j < i; ++j)
                 if (lu(i, j) != 0) lowerColumn[nl] = std::uint8_t(j), lowerValue[nl++] = lu(i, j);
@@ -297,7 +299,7 @@ struct ModeFactor {
                 v = c[i];
                 for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
             }
-            c[i] = v / lu(i, i);
+            c[i] = v / diagonal[i];
         }
         Eigen::Matrix<double, N, 1> x;
         for (int i = 0; i < N; ++i) x[q[i]] = c[i];

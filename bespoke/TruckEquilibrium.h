@@ -247,7 +247,7 @@ struct TruckSearchCounts {
 /// found so far (calcChoiceBound); the answer is the same, bit for bit.
 /// Screened: ChoiceBounds, and, while looking for the first consistent mode, skip the
 /// solve of a mode whose checks its closed contacts' kinematics decide
-/// (calcKinematicCompressions) or the screen finds violated beyond its error bound
+/// (calcKinematicCompressions, calcOneParameterKinematics) or the screen finds violated beyond its error bound
 /// (each checked quantity as one row times the right-hand side, TruckModeCache);
 /// the answer is the same, bit for bit.
 /// Exhaustive: solve every mode the search reaches (for checking).
