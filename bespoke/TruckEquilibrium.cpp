@@ -97,16 +97,19 @@ Kinematics makeKinematics(const TruckGeometry& g, const TruckInputs& in) {
     return k;
 }
 
+/// The constant of the spring force of the assumed segment (Z's constant c).
+double calcSpringConstant(const TruckGeometry& g, double c, SpringSegment seg) {
+    if (seg == SpringSegment::Linear) return g.Kv * c;
+    if (seg == SpringSegment::Bottomed) return g.Kb * c + (g.Kv - g.Kb) * g.travel;
+    return 0;
+}
+
 /// Spring force of the assumed segment, linear in the unknowns.
 Linear makeSpringForce(const TruckGeometry& g, const Linear& Z, SpringSegment seg) {
     Linear P;
-    if (seg == SpringSegment::Linear) {
-        P.row = g.Kv * Z.row;
-        P.c = g.Kv * Z.c;
-    } else if (seg == SpringSegment::Bottomed) {
-        P.row = g.Kb * Z.row;
-        P.c = g.Kb * Z.c + (g.Kv - g.Kb) * g.travel;
-    }
+    if (seg == SpringSegment::Linear) P.row = g.Kv * Z.row;
+    else if (seg == SpringSegment::Bottomed) P.row = g.Kb * Z.row;
+    P.c = calcSpringConstant(g, Z.c, seg);
     return P;
 }
 /// The mode's 15 equations A·x = b (x unscaled: m, rad, N).
@@ -201,8 +204,8 @@ void assembleSystem(const TruckGeometry& g, const TruckInputs& in, const TruckMo
 /// b of assembleSystem alone, the same expressions in the same order (bit-identical:
 /// test ReducedModel.CachedModeSolveIsBitIdenticalToTheDirectSolve); A is cached per mode.
 void assembleRhs(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                 const std::array<Linear, 2>& P, Eigen::Matrix<double, N, 1>& b) {
-    const double load0 = P[0].c, load1 = P[1].c;  // the friction unknowns add no constant
+                 const std::array<double, 2>& springConstant, Eigen::Matrix<double, N, 1>& b) {
+    const double load0 = springConstant[0], load1 = springConstant[1];  // the friction unknowns add no constant
     b[0] = 0 - (load0 + load1 - g.bolsterWeight);
     b[1] = 0 - g.l_s * (load0 - load1);
     b[2] = 0 - (-(load0 + load1) - g.wheelsetWeight);
@@ -733,18 +736,20 @@ struct SearchContext {
     const TruckInputs& in;
     const TruckModeCache& cache;
     Kinematics k;
-    std::array<std::array<Linear, 3>, 2> springs;  // [side][segment]
+    std::array<std::array<double, 3>, 2> springConstant;  // [side][segment]: all the right-hand sides need
     SearchContext(const TruckGeometry& geometry, const TruckInputs& inputs, const TruckModeCache& c)
         : g(geometry), in(inputs), cache(c), k(makeKinematics(geometry, inputs)) {
         for (int i : {0, 1})
-            for (int seg = 0; seg < 3; ++seg) springs[i][seg] = makeSpringForce(g, k.compression[i], SpringSegment(seg));
+            for (int seg = 0; seg < 3; ++seg)
+                springConstant[i][seg] = calcSpringConstant(g, k.compression[i].c, SpringSegment(seg));
     }
+    /// The mode's spring laws, made when a solution is built (its spring forces).
     std::array<Linear, 2> getSprings(const TruckMode& mode) const {
-        return {springs[0][int(mode.spring[0])], springs[1][int(mode.spring[1])]};
+        return {makeSpringForce(g, k.compression[0], mode.spring[0]), makeSpringForce(g, k.compression[1], mode.spring[1])};
     }
     Eigen::Matrix<double, N, 1> getRhs(const TruckMode& mode) const {
         Eigen::Matrix<double, N, 1> b;
-        assembleRhs(g, in, mode, k, getSprings(mode), b);
+        assembleRhs(g, in, mode, k, {springConstant[0][int(mode.spring[0])], springConstant[1][int(mode.spring[1])]}, b);
         return b;
     }
     TruckSolution solve(const TruckMode& mode) const {
