@@ -14,7 +14,8 @@
 //
 // The search finds each column's largest magnitude, then the first column holding the
 // largest of those, then its first row holding it: the first largest value in
-// column-major order, as Eigen's sequential scan, because max is exact. A matrix
+// column-major order, as Eigen's sequential scan, because max is exact. A column's
+// largest magnitude is found again only after the column changed. A matrix
 // with a NaN or an infinity is factored by Eigen itself (the scans differ there).
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -100,11 +101,16 @@ private:
         std::array<int, n> rowSwap{}, colSwap{};
         nonzeroPivots_ = n;
         maxPivot_ = 0;
+        // Each corner column's largest magnitude, kept between steps where the column did not
+        // change: a column left as it is (its multiplier ±0) loses only that zero from the
+        // corner, and the row swaps stay inside it.
+        double columnMax[n];
+        bool stale[n];
+        for (int j = 0; j < n; ++j) stale[j] = true;
         for (int k = 0; k < n; ++k) {
-            double columnMax[n];
             double best = 0;
             for (int j = k; j < n; ++j) {
-                columnMax[j] = calcMaxMagnitude(a + j * n + k, n - k);
+                if (stale[j]) columnMax[j] = calcMaxMagnitude(a + j * n + k, n - k), stale[j] = false;
                 best = std::max(best, columnMax[j]);
             }
             if (best == 0) {
@@ -120,8 +126,11 @@ private:
             rowSwap[k] = bi, colSwap[k] = bj;
             if (bi != k)
                 for (int j = 0; j < n; ++j) std::swap(a[j * n + k], a[j * n + bi]);
-            if (bj != k)
+            if (bj != k) {
                 for (int i = 0; i < n; ++i) std::swap(a[k * n + i], a[bj * n + i]);
+                std::swap(columnMax[k], columnMax[bj]);
+                std::swap(stale[k], stale[bj]);
+            }
             double* colK = a + k * n;
             const double pivot = colK[k];
             for (int i = k + 1; i < n; ++i) colK[i] /= pivot;
@@ -129,6 +138,7 @@ private:
                 double* col = a + j * n;
                 if (col[k] == 0 && !negativeZero) continue;
                 subtractMultiple(col + k + 1, col[k], colK + k + 1, n - k - 1);
+                stale[j] = true;
             }
         }
         for (int i = 0; i < n; ++i) p_[i] = q_[i] = i;
