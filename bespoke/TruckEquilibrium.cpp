@@ -714,17 +714,12 @@ namespace {
 /// kScreenRelativeError·(|checkRows|·|b| + |c|) plus kScreenForceFloor (forces) or
 /// kScreenLengthFloor (lengths).
 struct ScreenValues {
-    const Kinematics& k;
+    const std::array<double, kCheckedCount>& constant;  ///< each quantity's Kinematics constant (0 for forces)
     const TruckModeCache::Factor& f;
     const Eigen::Matrix<double, N, 1>& b;
-    const Eigen::Matrix<double, N, 1> size;  ///< |b|
-    Checked operator()(int q) const {
-        const double c = q < kRimGap ? 0.0 : getCheckedKinematics(k, q).c;
-        return Checked{f.checkRows.row(q).dot(b) + c, q};
-    }
+    Checked operator()(int q) const { return Checked{f.checkRows.row(q).dot(b) + constant[size_t(q)], q}; }
     double calcError(int q) const {
-        const double c = q < kRimGap ? 0.0 : getCheckedKinematics(k, q).c;
-        return kScreenRelativeError * (f.checkRows.row(q).cwiseAbs().dot(size) + std::abs(c)) +
+        return kScreenRelativeError * (f.checkRows.row(q).cwiseAbs().dot(b.cwiseAbs()) + std::abs(constant[size_t(q)])) +
                (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor);
     }
     double getError(const Checked& v) const { return (v.errorOf >= 0 ? calcError(v.errorOf) : 0.0) + v.errorAdded; }
@@ -737,11 +732,13 @@ struct SearchContext {
     const TruckModeCache& cache;
     Kinematics k;
     std::array<std::array<double, 3>, 2> springConstant;  // [side][segment]: all the right-hand sides need
+    std::array<double, kCheckedCount> checkedConstant{};   // each checked quantity's constant, for the screen
     SearchContext(const TruckGeometry& geometry, const TruckInputs& inputs, const TruckModeCache& c)
         : g(geometry), in(inputs), cache(c), k(makeKinematics(geometry, inputs)) {
         for (int i : {0, 1})
             for (int seg = 0; seg < 3; ++seg)
                 springConstant[i][seg] = calcSpringConstant(g, k.compression[i].c, SpringSegment(seg));
+        for (int q = kRimGap; q < kCheckedCount; ++q) checkedConstant[size_t(q)] = getCheckedKinematics(k, q).c;
     }
     /// The mode's spring laws, made when a solution is built (its spring forces).
     std::array<Linear, 2> getSprings(const TruckMode& mode) const {
@@ -763,7 +760,7 @@ struct SearchContext {
         const TruckModeCache::Factor& f = cache.getFactor(mode, in);
         if (!f.invertible) return true;
         const Eigen::Matrix<double, N, 1> b = getRhs(mode);
-        const ScreenValues value{k, f, b, b.cwiseAbs()};
+        const ScreenValues value{checkedConstant, f, b};
         bool certain = false;
         checkInequalities(g, in, mode, value, [&certain, &value](Checked v, Checked minimum, double unit) {
             const double excess = minimum.value - v.value;
@@ -1226,7 +1223,7 @@ TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckM
     const Eigen::Matrix<double, N, 1> b = context.getRhs(mode);
     const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
     const SolvedValues solved{context.k, x};
-    const ScreenValues screened{context.k, f, b, b.cwiseAbs()};
+    const ScreenValues screened{context.checkedConstant, f, b};
     for (int q = 0; q < kCheckedCount; ++q) {
         out.solved.push_back(solved(q).value);
         const Checked s = screened(q);
