@@ -201,37 +201,52 @@ void assembleSystem(const TruckGeometry& g, const TruckInputs& in, const TruckMo
     }
 }
 
-/// b of assembleSystem alone, the same expressions in the same order (bit-identical:
-/// test ReducedModel.CachedModeSolveIsBitIdenticalToTheDirectSolve); A is cached per mode.
-void assembleRhs(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                 const std::array<double, 2>& springConstant, Eigen::Matrix<double, N, 1>& b) {
-    const double load0 = springConstant[0], load1 = springConstant[1];  // the friction unknowns add no constant
-    b[0] = 0 - (load0 + load1 - g.bolsterWeight);
-    b[1] = 0 - g.l_s * (load0 - load1);
-    b[2] = 0 - (-(load0 + load1) - g.wheelsetWeight);
-    b[3] = 0 - -g.l_s * (load0 - load1);
-    b[12] = -g.kPin * in.plateY - 0.0;
-    const double gibSign = mode.gib == GibContact::Positive ? 1 : (mode.gib == GibContact::Negative ? -1 : 0);
-    const double kLat = 2 * (g.Kh + (gibSign != 0 ? g.Kgib : 0));
-    b[13] = 0 - (-kLat * k.lateral.c + 2 * g.Kgib * gibSign * g.gibClearance);
-    switch (mode.lateralWedge) {
-    case WedgeState::Stick:
-        b[14] = -2 * g.kBristleLateral * in.lateralAnchor - -2 * g.kBristleLateral * k.lateral.c;
-        break;
-    case WedgeState::SlipUp: b[14] = 2 * g.Fh - 0.0; break;
-    case WedgeState::SlipDown: b[14] = -2 * g.Fh - 0.0; break;
-    }
-    for (int i : {0, 1}) {
-        b[4 + i] = closesRim(mode.support, i) ? 0 - k.rimGap[i].c : 0 - 0.0;
-        b[6 + i] = closesSideBearing(mode.support, i) ? 0 - k.padGap[i].c : 0 - 0.0;
-        b[8 + i] = liftsWheel(mode.wheels, i) ? 0 - 0.0 : 0 - k.treadLift[i].c;
-        switch (mode.wedge[i]) {
-        case WedgeState::Stick: b[10 + i] = -g.kBristle * in.wedgeAnchor[i] - -g.kBristle * k.compression[i].c; break;
-        case WedgeState::SlipUp: b[10 + i] = -g.Fv - 0.0; break;
-        case WedgeState::SlipDown: b[10 + i] = g.Fv - 0.0; break;
+/// The entries of assembleSystem's b for every choice, each by the same expression, so that a
+/// search's many right-hand sides are look-ups (bit-identical: test
+/// ReducedModel.CachedModeSolveIsBitIdenticalToTheDirectSolve); A is cached per mode.
+struct RhsTable {
+    double plate = 0;                                        ///< b[12]
+    std::array<double, 3> gib{}, lateralWedge{};              ///< b[13] by GibContact, b[14] by WedgeState
+    std::array<std::array<double, 2>, 2> rim{}, pad{}, tread{};  ///< b[4 + i], b[6 + i] [side][closed], b[8 + i] [side][lifted]
+    std::array<std::array<double, 3>, 2> wedge{};             ///< b[10 + i] [side][WedgeState]
+    double bolsterWeight = 0, wheelsetWeight = 0, l_s = 0;
+
+    RhsTable(const TruckGeometry& g, const TruckInputs& in, const Kinematics& k)
+        : bolsterWeight(g.bolsterWeight), wheelsetWeight(g.wheelsetWeight), l_s(g.l_s) {
+        plate = -g.kPin * in.plateY - 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double gibSign = c == int(GibContact::Positive) ? 1 : (c == int(GibContact::Negative) ? -1 : 0);
+            const double kLat = 2 * (g.Kh + (gibSign != 0 ? g.Kgib : 0));
+            gib[size_t(c)] = 0 - (-kLat * k.lateral.c + 2 * g.Kgib * gibSign * g.gibClearance);
+        }
+        lateralWedge = {-2 * g.kBristleLateral * in.lateralAnchor - -2 * g.kBristleLateral * k.lateral.c,
+                        2 * g.Fh - 0.0, -2 * g.Fh - 0.0};
+        for (int i : {0, 1}) {
+            rim[size_t(i)] = {0 - 0.0, 0 - k.rimGap[i].c};
+            pad[size_t(i)] = {0 - 0.0, 0 - k.padGap[i].c};
+            tread[size_t(i)] = {0 - k.treadLift[i].c, 0 - 0.0};
+            wedge[size_t(i)] = {-g.kBristle * in.wedgeAnchor[i] - -g.kBristle * k.compression[i].c, -g.Fv - 0.0,
+                                g.Fv - 0.0};
         }
     }
-}
+    /// b of the mode, with its two springs' constants.
+    void fill(const TruckMode& mode, const std::array<double, 2>& springConstant, Eigen::Matrix<double, N, 1>& b) const {
+        const double load0 = springConstant[0], load1 = springConstant[1];  // the friction unknowns add no constant
+        b[0] = 0 - (load0 + load1 - bolsterWeight);
+        b[1] = 0 - l_s * (load0 - load1);
+        b[2] = 0 - (-(load0 + load1) - wheelsetWeight);
+        b[3] = 0 - -l_s * (load0 - load1);
+        b[12] = plate;
+        b[13] = gib[size_t(mode.gib)];
+        b[14] = lateralWedge[size_t(mode.lateralWedge)];
+        for (int i : {0, 1}) {
+            b[4 + i] = rim[size_t(i)][closesRim(mode.support, i)];
+            b[6 + i] = pad[size_t(i)][closesSideBearing(mode.support, i)];
+            b[8 + i] = tread[size_t(i)][liftsWheel(mode.wheels, i)];
+            b[10 + i] = wedge[size_t(i)][size_t(mode.wedge[i])];
+        }
+    }
+};
 
 }  // namespace
 
@@ -740,13 +755,14 @@ struct SearchContext {
                 springConstant[i][seg] = calcSpringConstant(g, k.compression[i].c, SpringSegment(seg));
         for (int q = kRimGap; q < kCheckedCount; ++q) checkedConstant[size_t(q)] = getCheckedKinematics(k, q).c;
     }
+    RhsTable rhs{g, in, k};  // after k
     /// The mode's spring laws, made when a solution is built (its spring forces).
     std::array<Linear, 2> getSprings(const TruckMode& mode) const {
         return {makeSpringForce(g, k.compression[0], mode.spring[0]), makeSpringForce(g, k.compression[1], mode.spring[1])};
     }
     Eigen::Matrix<double, N, 1> getRhs(const TruckMode& mode) const {
         Eigen::Matrix<double, N, 1> b;
-        assembleRhs(g, in, mode, k, {springConstant[0][int(mode.spring[0])], springConstant[1][int(mode.spring[1])]}, b);
+        rhs.fill(mode, {springConstant[0][int(mode.spring[0])], springConstant[1][int(mode.spring[1])]}, b);
         return b;
     }
     TruckSolution solve(const TruckMode& mode) const {
