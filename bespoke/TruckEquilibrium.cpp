@@ -298,9 +298,12 @@ struct ModeFactor {
     /// that starts at −0 and sums to zero (or to something not finite) is summed again
     /// by the dense loop, over rows before it that are the dense loop's by induction
     /// (test ReducedModel.CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve).
-    Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b) const {
+    ///
+    /// b is the unscaled right-hand side: each row divided by its rowScale on the way in,
+    /// each unknown multiplied by its column scale on the way out (as solveScaled's steps).
+    Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b, const Eigen::Matrix<double, N, 1>& colScale) const {
         double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = b[i];
+        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
         for (int i = 1; i < N; ++i) {
             double v = c[i];
             for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= lowerValue[k] * c[lowerColumn[k]];
@@ -320,14 +323,15 @@ struct ModeFactor {
             c[i] = v / diagonal[i];
         }
         Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = c[i];
+        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
         return x;
     }
 
     /// The dense loops: what solve must equal, bit for bit.
-    Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b) const {
+    Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b,
+                                           const Eigen::Matrix<double, N, 1>& colScale) const {
         double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = b[i];
+        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
         for (int i = 1; i < N; ++i) {
             double v = c[i];
             for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
@@ -339,7 +343,7 @@ struct ModeFactor {
             c[i] = v / lu(i, i);
         }
         Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = c[i];
+        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
         return x;
     }
 };
@@ -383,10 +387,8 @@ void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
 /// x from the factorization: b row-scaled, solved, unknowns unscaled.
 Eigen::Matrix<double, N, 1> solveScaled(const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b,
                                         TruckSubstitution substitution = TruckSubstitution::Sparse) {
-    Eigen::Matrix<double, N, 1> bs = b;
-    for (int r = 0; r < N; ++r)
-        if (f.rowScale[r] > 0) bs[r] /= f.rowScale[r];
-    return getColumnScale().asDiagonal() * (substitution == TruckSubstitution::Sparse ? f.solve(bs) : f.solveDense(bs));
+    const Eigen::Matrix<double, N, 1>& colScale = getColumnScale();
+    return substitution == TruckSubstitution::Sparse ? f.solve(b, colScale) : f.solveDense(b, colScale);
 }
 
 /// A quantity a check reads, and a bound on its absolute error: 0 from a solve (the
