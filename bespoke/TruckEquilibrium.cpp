@@ -510,15 +510,19 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
         return sol;
     }
     const Eigen::Matrix<double, N, 1> x = solveScaled(f, b, substitution);
+    // Every checked quantity once: the solution's fields and the checks read the same values.
+    std::array<double, kCheckedCount> quantity;
+    const SolvedValues solved{k, x};
+    for (int q = 0; q < kCheckedCount; ++q) quantity[size_t(q)] = solved(q).value;
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
     sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
-    sol.lateral = k.lateral.evaluate(x);
+    sol.lateral = quantity[kLateral];
     for (int i : {0, 1}) {
         sol.rim[i] = x[FCL + i], sol.sideBearing[i] = x[FSL + i], sol.wheel[i] = x[WL + i];
         sol.friction[i] = x[PHIL + i];
-        sol.compression[i] = k.compression[i].evaluate(x);
+        sol.compression[i] = quantity[size_t(kCompression + i)];
         sol.spring[i] = P[i].evaluate(x);
-        sol.wheelLift[i] = std::max(0.0, k.treadLift[i].evaluate(x));
+        sol.wheelLift[i] = std::max(0.0, quantity[size_t(kTreadLift + i)]);
         sol.wedgeAnchor[i] =
             mode.wedge[i] == WedgeState::Stick ? in.wedgeAnchor[i] : sol.compression[i] - sol.friction[i] / g.kBristle;
     }
@@ -526,10 +530,11 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
                             ? in.lateralAnchor
                             : sol.lateral - sol.lateralFriction / (2 * g.kBristleLateral);
     double worst = 0;  // a NaN check leaves it as it is, as std::max does
-    checkInequalities(g, in, mode, SolvedValues{k, x}, [&worst](Checked value, Checked minimum, double unit) {
-        worst = std::max(worst, (minimum.value - value.value) / unit);
-        return true;
-    });
+    checkInequalities(g, in, mode, [&quantity](int q) { return Checked{quantity[size_t(q)]}; },
+                      [&worst](Checked value, Checked minimum, double unit) {
+                          worst = std::max(worst, (minimum.value - value.value) / unit);
+                          return true;
+                      });
     sol.violation = worst;
     sol.consistent = worst <= kConsistentViolation;
     return sol;
