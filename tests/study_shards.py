@@ -5,7 +5,8 @@ study (ctest StudyCli.ShardsMergeToTheUnshardedStudy; docs/studies.md).
 
 usage: study_shards.py ROCKROLL_BIN SOURCE_DIR WORK_DIR
 
-The study is scenarios/studies/side-bearing-clearance.toml with a shorter run.
+The study is scenarios/studies/side-bearing-clearance.toml with a shorter run (2 s a point),
+and for the killed and resumed one a longer (60 s a point).
 """
 import csv
 import json
@@ -101,9 +102,17 @@ def main():
         fail(f"rollover study: exit {r.returncode}, statuses {[row.get('status') for row in rows]}: {r.stderr}")
     print("a point past the rollover limit has status overturned; the next point runs")
 
-    # Killed midway (SIGKILL), resumed with another --jobs: the same files.
+    # Killed midway (SIGKILL), resumed with another --jobs: the same files. Its points run
+    # 60 s each, so that the study is still running well after its second point is journaled
+    # (at 2 s a point the whole study can end between the poll and the kill).
+    slow = os.path.join(work, "slow.toml")
+    with open(slow, "w") as f:
+        f.write(text.replace('"2 s"', '"60 s"'))
+    r = run("study", slow, "--out", "whole-slow", "--jobs", "2")
+    if r.returncode != 0:
+        fail(f"slow whole study exited {r.returncode}: {r.stderr}")
     journal = os.path.join(work, "resumed.partial", "journal.jsonl")
-    p = subprocess.Popen([binary, "study", study, "--out", "resumed", "--jobs", "2"], cwd=work,
+    p = subprocess.Popen([binary, "study", slow, "--out", "resumed", "--jobs", "2"], cwd=work,
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     while p.poll() is None:
         try:
@@ -116,12 +125,12 @@ def main():
     p.wait()
     if p.returncode != -signal.SIGKILL:
         fail(f"the study ended (exit {p.returncode}) before it could be killed")
-    r = run("study", study, "--out", "resumed", "--jobs", "1", "--resume")
+    r = run("study", slow, "--out", "resumed", "--jobs", "1", "--resume")
     if r.returncode != 0 or "resuming from" not in r.stderr:
         fail(f"resumed study exited {r.returncode}: {r.stderr}")
     for name in ("study.csv", "study.json"):
-        if open(os.path.join(work, "whole", name), "rb").read() != open(os.path.join(work, "resumed", name), "rb").read():
-            fail(f"resumed/{name} differs from whole/{name}")
+        if open(os.path.join(work, "whole-slow", name), "rb").read() != open(os.path.join(work, "resumed", name), "rb").read():
+            fail(f"resumed/{name} differs from whole-slow/{name}")
     print("a study killed midway and resumed gives the same files")
     print("1 passed, 0 failed")
 

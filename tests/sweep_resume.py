@@ -72,7 +72,9 @@ def main():
     os.makedirs(work)
     scenario = os.path.join(source, "scenarios", "70ton-loaded.toml")
     def make_sweep(to_mph="17", extra=()):
-        return [binary, "sweep", scenario, "--model", "reduced", "--duration-s", "2", "--from-mph", "13",
+        # 20 s a point: the sweep still runs well after its third point is journaled (at 2 s a
+        # point it can end between the poll and the kill)
+        return [binary, "sweep", scenario, "--model", "reduced", "--duration-s", "20", "--from-mph", "13",
                 "--to-mph", to_mph, "--step-mph", "0.5", "--direction", "both", *extra]
 
     sweep = make_sweep()
