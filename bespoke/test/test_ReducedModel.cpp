@@ -377,6 +377,26 @@ std::vector<TruckInputs> makeScatteredInputs(const ReducedHalfCarModel& m, int c
     }
     return out;
 }
+
+/// Cross-level rocking at 1.3 Hz, 1 in: side bearings, lift and slipping wedges.
+ReducedHalfCarModel makeRockingModel() {
+    return ReducedHalfCarModel(getCar(), [](double t) {
+        const double w = 2 * M_PI * 1.3, a = 1.0 * units::inch * std::sin(w * t), v = 1.0 * units::inch * w * std::cos(w * t);
+        return RailState{{a, -a}, {v, -v}};
+    });
+}
+
+/// One RK4 step from (t, y) whose first stage is e, with the memory fixed over the step, as
+/// simulateReduced steps.
+ReducedHalfCarModel::State stepWithFixedMemory(const ReducedHalfCarModel& m, double t, const ReducedHalfCarModel::State& y,
+                                               const ReducedHalfCarModel::TruckMemory& mem,
+                                               const ReducedHalfCarModel::Evaluation& e) {
+    const double h = ReducedHalfCarModel::kStep;
+    const auto k2 = m.evaluate(t + h / 2, y + h / 2 * e.derivative, mem).derivative;
+    const auto k3 = m.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
+    const auto k4 = m.evaluate(t + h, y + h * k3, mem).derivative;
+    return y + h / 6 * (e.derivative + 2 * k2 + 2 * k3 + k4);
+}
 }  // namespace
 
 // The search skips a mode when calcChoiceBound already rules it out, which is only
@@ -514,22 +534,15 @@ TEST(ReducedModel, KinematicBoundsRuleOutOnlyInconsistentModes) {
     const TruckGeometry& g = m.getTruckGeometry();
     const TruckModeCache cache(g);
     std::vector<TruckInputs> inputs = makeScatteredInputs(m, 8, 17);
-    // States of a run at 1 in and 1.3 Hz: lift, side bearings and slipping wedges.
-    const ReducedHalfCarModel rocking(getCar(), [](double t) {
-        const double w = 2 * M_PI * 1.3, a = 1.0 * units::inch * std::sin(w * t), v = 1.0 * units::inch * w * std::cos(w * t);
-        return RailState{{a, -a}, {v, -v}};
-    });
+    // States of a rocking run (makeRockingModel).
+    const ReducedHalfCarModel rocking = makeRockingModel();
     auto y = rocking.makeStaticState();
     auto mem = rocking.makeStaticMemory();
-    const double h = ReducedHalfCarModel::kStep;
-    for (int k = 0; k < 800; ++k) {  // RK4 with the memory fixed over a step, as simulateReduced steps
-        const double t = k * h;
+    for (int k = 0; k < 800; ++k) {
+        const double t = k * ReducedHalfCarModel::kStep;
         const auto e = rocking.evaluate(t, y, mem);
         if (k % 40 == 39) inputs.push_back(rocking.makeTruckInputs(t, y, mem));
-        const auto k2 = rocking.evaluate(t + h / 2, y + h / 2 * e.derivative, mem).derivative;
-        const auto k3 = rocking.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
-        const auto k4 = rocking.evaluate(t + h, y + h * k3, mem).derivative;
-        y += h / 6 * (e.derivative + 2 * k2 + 2 * k3 + k4);
+        y = stepWithFixedMemory(rocking, t, y, mem, e);
         mem = ReducedHalfCarModel::makeMemoryAfter(e.truck);
     }
     long ruledOut = 0, family = 0;
@@ -586,11 +599,7 @@ TEST(ReducedModel, KinematicCompressionsMatchTheSolve) {
 }
 
 TEST(ReducedModel, ReusedFirstStageIsTheEvaluationItReplaces) {
-    // Cross-level rocking at 1.3 Hz, 1 in: side bearings, lift and slipping wedges.
-    const ReducedHalfCarModel m(getCar(), [](double t) {
-        const double w = 2 * M_PI * 1.3, a = 1.0 * units::inch * std::sin(w * t), v = 1.0 * units::inch * w * std::cos(w * t);
-        return RailState{{a, -a}, {v, -v}};
-    });
+    const ReducedHalfCarModel m = makeRockingModel();
     auto y = m.makeStaticState();
     auto mem = m.makeStaticMemory();
     const double h = ReducedHalfCarModel::kStep;
@@ -608,11 +617,7 @@ TEST(ReducedModel, ReusedFirstStageIsTheEvaluationItReplaces) {
             if (e.truck.mode.wedge[0] != WedgeState::Stick || e.truck.mode.wedge[1] != WedgeState::Stick) ++slipping;
         }
         if (!(e.truck.mode == mem.mode)) ++modeChanges;
-        // RK4 over the step with the memory fixed, as simulateReduced steps.
-        const auto k2 = m.evaluate(t + h / 2, y + h / 2 * e.derivative, mem).derivative;
-        const auto k3 = m.evaluate(t + h / 2, y + h / 2 * k2, mem).derivative;
-        const auto k4 = m.evaluate(t + h, y + h * k3, mem).derivative;
-        y += h / 6 * (e.derivative + 2 * k2 + 2 * k3 + k4);
+        y = stepWithFixedMemory(m, t, y, mem, e);
         mem = after;
     }
     EXPECT_GT(compared, 1100);
