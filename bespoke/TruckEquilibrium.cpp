@@ -873,6 +873,16 @@ std::pair<double, double> solvePair(double a1, double b1, double a2, double b2) 
 
 constexpr double kKinematicRelativeError = 1e-9;
 
+/// The margins of side i's three wedge checks on a kinematic compression Z (WedgeState order),
+/// given Z's own margin eZ and a bound on |Z − Z_a|: the stick check is |Φ| ≤ F_V on the solved
+/// Φ = k_b (Z − Z_a), the slips' on Z − Z_old.
+std::array<double, 3> calcWedgeMargins(const TruckGeometry& g, const TruckInputs& in, int i, double eZ,
+                                       double fromAnchor) {
+    const double slip = eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]);
+    return {eZ + kKinematicRelativeError * (std::abs(in.wedgeAnchor[i]) + fromAnchor) + kScreenForceFloor / g.kBristle,
+            slip, slip};
+}
+
 /// The bolster position a support with two closed contacts fixes (their gap rows = 0; a
 /// gap row is −z_b − α θ_b + c), with the other contacts' gap rows.
 struct FixedBolster {
@@ -1037,11 +1047,8 @@ struct OneParameterFamily {
             const double eZ = margin(Z), zMax = Z.size + std::abs(Z.b) * kFamilyParameterBound;  // |Z| over the range
             compression[size_t(i)] = Z, compressionMargin[size_t(i)] = eZ;
             const ChoiceBounds::CompressionIntervals intervals = ChoiceBounds::makeCompressionIntervals(g, in, i);
-            // KinematicBounds's margins of the wedge checks, with |Z| at its largest.
-            const double wedgeMargin[3] = {
-                eZ + kKinematicRelativeError * (2 * std::abs(in.wedgeAnchor[i]) + zMax) + kScreenForceFloor / g.kBristle,
-                eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]),
-                eZ + kKinematicRelativeError * std::abs(in.compressionOld[i])};
+            // |Z − Z_a| at its largest over the range.
+            const std::array<double, 3> wedgeMargin = calcWedgeMargins(g, in, i, eZ, std::abs(in.wedgeAnchor[i]) + zMax);
             for (size_t j = 0; j < 3; ++j) {
                 const ChoiceBounds::Interval& spring = intervals.spring[j];
                 const double springSlack = eZ + kConsistentViolation * spring.unit;
@@ -1066,9 +1073,8 @@ struct OneParameterFamily {
         return r;
     }
 
-    static Range intersect(const Range& x, const Range& y) {
-        return {std::max(x.lo, y.lo), std::min(x.hi, y.hi), x.bounded || y.bounded};
-    }
+    /// Where both hold (bounded is rulesOut's test of the side ranges alone).
+    static Range intersect(const Range& x, const Range& y) { return {std::max(x.lo, y.lo), std::min(x.hi, y.hi), false}; }
     /// The t where lo ≤ a + b·t ≤ hi (the bounds already widened).
     static Range makeZRange(const Affine& f, double lo, double hi) {
         Range r;
@@ -1137,11 +1143,8 @@ struct KinematicBounds {
                 std::array<bool, 3> segment{}, wedge{};
                 for (size_t seg = 0; seg < 3; ++seg) segment[seg] = outside(intervals.spring[seg], eZ);
                 // The stick interval's ends are Z_a ± F_V/k_b; the slips' end is Z_old.
-                wedge[0] = outside(intervals.wedge[0], eZ + kKinematicRelativeError * (std::abs(in.wedgeAnchor[i]) +
-                                                                                       std::abs(z - in.wedgeAnchor[i])) +
-                                                           kScreenForceFloor / g.kBristle);
-                for (size_t w : {1, 2})
-                    wedge[w] = outside(intervals.wedge[w], eZ + kKinematicRelativeError * std::abs(in.compressionOld[i]));
+                const std::array<double, 3> wedgeMargin = calcWedgeMargins(g, in, i, eZ, std::abs(z - in.wedgeAnchor[i]));
+                for (size_t w = 0; w < 3; ++w) wedge[w] = outside(intervals.wedge[w], wedgeMargin[w]);
                 for (size_t seg = 0; seg < 3; ++seg)
                     for (size_t w = 0; w < 3; ++w) sideOut[si][size_t(i)][seg][w] = segment[seg] || wedge[w];
             }
