@@ -93,11 +93,14 @@ void writeHistoryCsv(std::ostream& out, const TimeHistory& h, const std::vector<
     const std::vector<std::string>& names = columns.empty() ? h.names : columns;
     std::vector<int> index;
     for (const auto& c : names) index.push_back(h.column(c));
+    if (!h.samples.empty() && h.samples.getWidth() != h.names.size())
+        throw std::logic_error(fmt::format("writeHistoryCsv: rows of {} values under {} names", h.samples.getWidth(),
+                                           h.names.size()));
     CsvWriter csv(out, names);
     std::vector<CsvCell> cells;
     for (const auto& row : h.samples) {
         cells.clear();
-        for (int k : index) cells.push_back(CsvCell::significant(row.at(k), digits));
+        for (int k : index) cells.push_back(CsvCell::significant(row[size_t(k)], digits));
         csv.writeRow(cells);
     }
 }

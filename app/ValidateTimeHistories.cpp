@@ -74,7 +74,7 @@ std::string makeTimeHistorySection(const Settings& s, nlohmann::ordered_json& me
     }
     meta["defaultRuns"] = nlohmann::ordered_json::array();
     for (const auto& r : runs) meta["defaultRuns"].push_back(toJson(r.summary));
-    if (!u.describe().empty()) md += "\n" + u.describe() + "\n";
+    if (!u.describe().empty()) md += fmt::format("\n{}\n", u.describe());
     md += "\n![time histories](timehistory.png)\n\n"
           "The reduced model, which is the report's own method, lands closest to the report's §3.1 wheel lift; the "
           "Simbody models and their hand-written twin (eom, within 0.2 % of the Simbody half car) lift a wheel far "

@@ -45,7 +45,7 @@ struct ClimbMeasure {
 /// The largest value of `value` held over the shortest stretch of rows, all satisfying
 /// `holds`, that lasts longer than `duration` (rows[i][0] is the time); NaN: none.
 template <class Value, class Holds>
-double calcHeldMaximum(const std::vector<std::vector<double>>& rows, double duration, Value value, Holds holds) {
+double calcHeldMaximum(const SampleTable& rows, double duration, Value value, Holds holds) {
     double best = kNaN;
     for (size_t i = 0; i < rows.size(); ++i) {
         if (!holds(i)) continue;

@@ -45,15 +45,13 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
     for (const auto& n : model.getChannels().names) result.history.names.push_back(n);
     std::vector<double> row;
     RunGuard guard(model.getChannels(), settings.limits);
-    auto record = [&](double t, const State& y) -> const std::vector<double>& {
+    auto record = [&](double t, const State& y) {
         model.calcChannels(t, y, row, integ.getQuadrature().data());
-        std::vector<double> full{t};
-        full.insert(full.end(), row.begin(), row.end());
-        result.history.samples.push_back(std::move(full));
-        return result.history.samples.back();
+        return result.history.samples.append(t, row);
     };
-    guard.check(record(0, y0), result);
     const long nOut = std::lround(settings.duration * settings.outputRate);
+    result.history.samples.reserve(size_t(nOut) + 1, result.history.names.size());
+    guard.check(record(0, y0), result);
     for (long k = 1; k <= nOut && !result.stop; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
         integ.advanceTo(tOut);

@@ -261,7 +261,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         if (!(t == railTime)) rail = model.calcRails(t), railTime = t;
         return rail;
     };
-    auto accept = [&](double t) -> const std::vector<double>& {
+    auto accept = [&](double t) {
         accepted = model.evaluate(getRails(t), y, mem, &st.modes);
         tAccepted = t;
         const ReducedHalfCarModel::Evaluation& e = accepted;
@@ -269,17 +269,15 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
         mem = ReducedHalfCarModel::makeMemoryAfter(e.truck);
         if (!e.truck.consistent) ++st.inconsistentSteps;
         model.calcChannels(t, y, e, row, energy);
-        std::vector<double> full{t};
-        full.insert(full.end(), row.begin(), row.end());
-        result.history.samples.push_back(std::move(full));
-        return result.history.samples.back();
+        return result.history.samples.append(t, row);
     };
-    guard.check(accept(0), result);
     // Whole steps of Δt, then one shorter step to end at `duration` exactly when it is
     // not a whole number of steps (a periodic orbit's map runs over T = L / V).
     const long n = long(std::floor(duration / h + 1e-9));
     const double last = duration - double(n) * h;
     const long total = last > 1e-9 * h ? n + 1 : n;
+    result.history.samples.reserve(size_t(total) + 1, result.history.names.size());
+    guard.check(accept(0), result);
     long k = 0;
     for (; k < total && !result.stop; ++k) {
         const double t = double(k) * h, dt = k < n ? h : last;

@@ -4,6 +4,7 @@
 
 #include "contacts/SpringGroupLaws.h"
 #include "mbmodel/CarSide.h"
+#include "mbmodel/HugePageMemory.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,7 +13,6 @@
 #include <cstring>
 #include <new>
 #include <type_traits>
-#include <sys/mman.h>
 #include <deque>
 #include <mutex>
 #include <cstdint>
@@ -656,36 +656,15 @@ Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const
 
 struct TruckModeCache::Factor : ModeFactor {};
 
-struct TruckModeCache::FactorArena {
-    static constexpr std::size_t kBlockBytes = std::size_t(2) << 20;
-    static constexpr std::size_t kSlotBytes = (sizeof(Factor) + 63) / 64 * 64;
-    static_assert(std::is_trivially_destructible_v<Factor> && kSlotBytes <= kBlockBytes);
-    std::mutex mutex;
-    std::vector<void*> blocks;
-    std::size_t used = kBlockBytes;  // bytes taken in the last block
-    /// A default-initialized Factor in the arena, kept until the arena is destroyed.
-    Factor* allocate() {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (used + kSlotBytes > kBlockBytes) {
-            void* block = std::aligned_alloc(kBlockBytes, kBlockBytes);
-            if (!block) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-            ::madvise(block, kBlockBytes, MADV_HUGEPAGE);  // advice only: 4 KB pages if refused
-#endif
-            blocks.push_back(block);
-            used = 0;
-        }
-        void* slot = static_cast<char*>(blocks.back()) + used;
-        used += kSlotBytes;
-        return new (slot) Factor;
-    }
-    ~FactorArena() {
-        for (void* block : blocks) std::free(block);
-    }
-};
+// The arena frees its blocks without destructors: what lives there must need none.
+static_assert(std::is_trivially_destructible_v<TruckModeCache::Factor> &&
+              std::is_trivially_destructible_v<std::atomic<TruckModeCache::Factor*>>);
 
-TruckModeCache::TruckModeCache(const TruckGeometry& g)
-    : geometry_(g), slots_(kModeCount), arena_(std::make_unique<FactorArena>()) {}
+TruckModeCache::TruckModeCache(const TruckGeometry& g) : geometry_(g), arena_(std::make_unique<HugePageArena>()) {
+    void* slots = arena_->allocate(kModeCount * sizeof(std::atomic<Factor*>));
+    slots_ = static_cast<std::atomic<Factor*>*>(slots);
+    for (int i = 0; i < kModeCount; ++i) new (slots_ + i) std::atomic<Factor*>(nullptr);
+}
 
 std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeometry& g) {
     static_assert(sizeof(TruckGeometry) % sizeof(double) == 0, "TruckGeometry holds doubles alone (compared bytewise)");
@@ -710,7 +689,8 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
-    Factor& made = *arena_->allocate();  // a thread that loses the race below leaves its copy unused
+    // A thread that loses the race below leaves its copy unused.
+    Factor& made = *new (arena_->allocate(sizeof(Factor), alignof(Factor) > 64 ? alignof(Factor) : 64)) Factor;
     factorSystem(assembleMatrix(geometry_, in, mode, k), made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
@@ -1310,31 +1290,47 @@ struct PackedMode {
     }
 };
 
+/// A list of modes kept in a HugePageArena.
+struct ModeOrder {
+    const PackedMode* modes;
+    std::size_t count;
+    const PackedMode* begin() const { return modes; }
+    const PackedMode* end() const { return modes + count; }
+};
+
 /// The neighbour part of the search order from `previous` (visitNeighbours) with each mode
 /// once, where it first comes, and without `previous`: the modes the first pass considers,
 /// in its order. It depends on `previous` alone, so each is made once per process, on first
-/// use (lock-free slots; test ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
-const std::vector<PackedMode>& getNeighbourOrder(const TruckMode& previous) {
+/// use, into huge pages (lock-free slots; test
+/// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
+const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
+    using Slot = std::atomic<const ModeOrder*>;
+    static_assert(std::is_trivially_destructible_v<Slot> && std::is_trivially_destructible_v<ModeOrder>);
     struct Orders {
-        std::vector<std::atomic<const std::vector<PackedMode>*>> slots{size_t(TruckModeCache::kModeCount)};
-        ~Orders() {
-            for (auto& slot : slots) delete slot.load();
+        HugePageArena arena;
+        Slot* slots;
+        Orders() : slots(static_cast<Slot*>(arena.allocate(TruckModeCache::kModeCount * sizeof(Slot)))) {
+            for (int i = 0; i < TruckModeCache::kModeCount; ++i) new (slots + i) Slot(nullptr);
         }
     };
     static Orders orders;
-    std::atomic<const std::vector<PackedMode>*>& slot = orders.slots[size_t(TruckModeCache::getIndex(previous))];
-    if (const std::vector<PackedMode>* order = slot.load(std::memory_order_acquire)) return *order;
-    auto made = std::make_unique<std::vector<PackedMode>>();
+    Slot& slot = orders.slots[TruckModeCache::getIndex(previous)];
+    if (const ModeOrder* order = slot.load(std::memory_order_acquire)) return *order;
+    std::vector<PackedMode> list;
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
     visitNeighbours(previous, [&](const TruckMode& m) {
         const size_t index = size_t(TruckModeCache::getIndex(m));
-        if (!seen.test(index)) seen.set(index), made->push_back(PackedMode::pack(m));
+        if (!seen.test(index)) seen.set(index), list.push_back(PackedMode::pack(m));
         return false;
     });
-    const std::vector<PackedMode>* expected = nullptr;
-    if (slot.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
-    return *expected;  // another thread made the same order first
+    auto* modes = static_cast<PackedMode*>(orders.arena.allocate(list.size() * sizeof(PackedMode), 8));
+    std::copy(list.begin(), list.end(), modes);
+    void* header = orders.arena.allocate(sizeof(ModeOrder), alignof(ModeOrder));
+    const ModeOrder* made = new (header) ModeOrder{modes, list.size()};
+    const ModeOrder* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel)) return *made;
+    return *expected;  // another thread made the same order first (this copy stays unused in the arena)
 }
 
 /// The search order's first consistent mode, or false when no mode is consistent.
@@ -1373,7 +1369,7 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
         found = context.solve(m);
         return true;
     };
-    const std::vector<PackedMode>& neighbours = getNeighbourOrder(previous);
+    const ModeOrder& neighbours = getNeighbourOrder(previous);
     for (const PackedMode& m : neighbours)
         if (test(m.unpack())) return true;
     // The enumeration leaves out what the neighbour part considered.

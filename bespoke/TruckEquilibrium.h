@@ -55,6 +55,8 @@
 
 namespace rockroll {
 
+class HugePageArena;
+
 enum class CarBodySupport { TwoPointCenterPlate, CornerLeft, CornerRight, SideBearingAndCornerLeft,
                             SideBearingAndCornerRight, SideBearingLeft, SideBearingRight, None };
 enum class WheelContact { Both, LiftLeft, LiftRight };
@@ -174,14 +176,13 @@ public:
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
 
 private:
-    /// Where the factorizations live: blocks of 2 MB, huge pages where the system
-    /// gives them. Allocated one by one, the ~1 300 factorizations of one run cost a
-    /// page fault each on first touch, more than the factoring itself on a virtual
-    /// machine (bench/README.md, "Bespoke models").
-    struct FactorArena;
     TruckGeometry geometry_;
-    mutable std::vector<std::atomic<Factor*>> slots_;
-    std::unique_ptr<FactorArena> arena_;
+    /// Where the slots and the factorizations live: 2 MB blocks, huge pages where the
+    /// system gives them (mbmodel/HugePageMemory.h). Allocated one by one, the ~1 000
+    /// factorizations of one run cost a page fault each on first touch, more than the
+    /// factoring itself on a virtual machine (bench/README.md, "Bespoke models").
+    std::unique_ptr<HugePageArena> arena_;
+    std::atomic<Factor*>* slots_;  ///< kModeCount, in arena_; null until factored
 };
 
 /// solveTruckMode with the cache's factorization (bit-identical).

@@ -24,7 +24,7 @@ Columns findColumns(const ChannelLayout& layout) {
     return {layout.energyStored + 1, layout.energyInput + 1, layout.energyDissipated + 1};
 }
 
-double relativeError(const std::vector<double>& first, const std::vector<double>& row, const Columns& c) {
+double relativeError(std::span<const double> first, std::span<const double> row, const Columns& c) {
     const double W = row[c.input], D = row[c.dissipated], dE = row[c.stored] - first[c.stored];
     const double scale = std::max(std::abs(W), D);
     if (!(scale > 0)) return kNaN;

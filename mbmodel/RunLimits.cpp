@@ -67,7 +67,7 @@ void RunGuard::checkWallTime(double simTime) const {
                                simTime);
 }
 
-bool RunGuard::check(const std::vector<double>& row, RunResult& result) {
+bool RunGuard::check(std::span<const double> row, RunResult& result) {
     const double t = row[0];
     auto ch = [&row](int c) { return row[size_t(c) + 1]; };
     for (size_t i = 1; i < row.size(); ++i)

@@ -73,7 +73,7 @@ public:
 
     /// After each recorded row (row[0] = t, then the layout's channels).
     /// Returns true when the run must stop; the reason is in `result.stop`.
-    bool check(const std::vector<double>& row, RunResult& result);
+    bool check(std::span<const double> row, RunResult& result);
     /// Throws NumericalFailure once the wall-time limit has passed.
     void checkWallTime(double simTime) const;
 

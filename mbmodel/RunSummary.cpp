@@ -131,7 +131,8 @@ RunSummary summarizeRun(const RunResult& run, const ChannelLayout& layout, const
 
     // Static values: the given reference row (a run continuing a sweep does not
     // start static), else the first sample.
-    const std::vector<double>& staticRow = opt.staticReference.empty() ? h.samples.front() : opt.staticReference;
+    const std::span<const double> staticRow =
+        opt.staticReference.empty() ? h.samples.front() : std::span<const double>(opt.staticReference);
     r.minWheelLoadRatio = r.rawMinWheelLoadRatio = std::numeric_limits<double>::infinity();
     for (int c : layout.singleWheelLoad) {
         const auto x = getColumn(h, c);

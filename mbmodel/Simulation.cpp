@@ -79,13 +79,10 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
     RunGuard guard(model.getChannels(), settings.limits);
 
     std::vector<double> channels;
-    auto record = [&](const State& s) -> const std::vector<double>& {
+    auto record = [&](const State& s) {
         model.getSystem().realize(s, Stage::Velocity);  // every channel is a function of q, u, z, t
         model.calcChannels(s, channels);
-        std::vector<double> row{s.getTime()};
-        row.insert(row.end(), channels.begin(), channels.end());
-        result.history.samples.push_back(std::move(row));
-        return result.history.samples.back();
+        return result.history.samples.append(s.getTime(), channels);
     };
     auto fail = [&](const std::string& why) {
         return NumericalFailure(fmt::format("integration failed ({}, accuracy {:g}) near t = {:.6f} s: {}\n"
@@ -94,9 +91,10 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
                                             integ->getTime(), why, describeState(model, integ->getState())),
                                 integ->getTime());
     };
+    const long nOut = std::lround(settings.duration * settings.outputRate);
+    result.history.samples.reserve(size_t(nOut) + 1, result.history.names.size());
     guard.check(record(integ->getState()), result);
 
-    const long nOut = std::lround(settings.duration * settings.outputRate);
     for (long k = 1; k <= nOut && !result.stop; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);
         try {

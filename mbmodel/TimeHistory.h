@@ -1,5 +1,7 @@
 #pragma once
 // A recorded run, shared by every model (Simbody and bespoke). No Simbody dependency.
+#include "mbmodel/SampleTable.h"
+
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -9,7 +11,7 @@ namespace rockroll {
 
 struct TimeHistory {
     std::vector<std::string> names;            ///< "t_s" then the model's channels
-    std::vector<std::vector<double>> samples;  ///< one row per output time
+    SampleTable samples;                       ///< one row per output time
     int column(const std::string& name) const {
         for (size_t i = 0; i < names.size(); ++i)
             if (names[i] == name) return int(i);

@@ -87,11 +87,9 @@ std::vector<ScenarioOverride> toOverrides(const std::vector<std::pair<std::strin
 py::array_t<double> toArray(const TimeHistory& h) {
     const size_t rows = h.samples.size(), cols = h.names.size();
     py::array_t<double> a({rows, cols});
-    double* out = a.mutable_data();
-    for (size_t r = 0; r < rows; ++r) {
-        if (h.samples[r].size() != cols) throw std::runtime_error("history row with the wrong number of channels");
-        std::memcpy(out + r * cols, h.samples[r].data(), cols * sizeof(double));
-    }
+    if (rows > 0 && h.samples.getWidth() != cols)
+        throw std::runtime_error("history rows with the wrong number of channels");
+    if (rows > 0) std::memcpy(a.mutable_data(), h.samples.data(), rows * cols * sizeof(double));
     return a;
 }
 

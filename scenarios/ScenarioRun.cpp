@@ -130,7 +130,8 @@ ScenarioRun runScenario(const Scenario& given, const RunStart& start) {
     run.result = model->simulate(sc, start.from ? start.from->y : std::vector<double>{});
     run.summary = summarizeRun(run.result, model->getChannels(), opt);
     run.channels = model->getChannels();
-    run.staticReference = opt.staticReference.empty() ? run.result.history.samples.front() : opt.staticReference;
+    run.staticReference =
+        opt.staticReference.empty() ? toVector(run.result.history.samples.front()) : opt.staticReference;
     run.restart = RestartState{d.name, run.result.finalState, motion.calcDistance(run.result.simTime), sc.speed};
     run.summary.model = d.name;
     run.summary.car = sc.car.name;

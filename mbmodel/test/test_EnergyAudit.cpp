@@ -137,11 +137,11 @@ TEST(EnergyAudit, BalanceErrorOfAHistory) {
     EXPECT_DOUBLE_EQ(calcEnergyBalanceError(h, l), 2.0 / 80);
     // t = 1: |50 − 30 − 19| / 50 = 0.02 < 0.025.
     EXPECT_DOUBLE_EQ(calcWorstEnergyBalanceError(h, l), 2.0 / 80);
-    h.samples[1] = {1, 0, 130, 50, 10};  // |50 − 30 − 10| / 50 = 0.2
+    h.samples.set(1, {1, 0, 130, 50, 10});  // |50 − 30 − 10| / 50 = 0.2
     EXPECT_DOUBLE_EQ(calcWorstEnergyBalanceError(h, l), 0.2);
     EXPECT_DOUBLE_EQ(calcWorstEnergyBalanceError(h, l, 1.5), 2.0 / 80);
     // Dissipation larger than the input sets the scale.
-    h.samples.back() = {2, 0, 60, 10, 52};  // |10 + 40 − 52| / 52
+    h.samples.set(2, {2, 0, 60, 10, 52});  // |10 + 40 − 52| / 52
     EXPECT_DOUBLE_EQ(calcEnergyBalanceError(h, l), 2.0 / 52);
 }
 

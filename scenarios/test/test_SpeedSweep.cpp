@@ -15,8 +15,8 @@ Scenario makeBase(const std::string& model, double duration) {
     sc.run.duration = duration;
     return sc;
 }
-std::vector<double> firstRow(const ScenarioRun& r) { return r.result.history.samples.front(); }
-std::vector<double> lastRow(const ScenarioRun& r) { return r.result.history.samples.back(); }
+std::vector<double> firstRow(const ScenarioRun& r) { return toVector(r.result.history.samples.front()); }
+std::vector<double> lastRow(const ScenarioRun& r) { return toVector(r.result.history.samples.back()); }
 }  // namespace
 
 TEST(SpeedSweep, TrackMotionRampsWithoutJumps) {

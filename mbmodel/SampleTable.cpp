@@ -1,0 +1,109 @@
+#include "mbmodel/SampleTable.h"
+
+#include "mbmodel/HugePageMemory.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <fmt/format.h>
+#include <stdexcept>
+#include <utility>
+
+namespace rockroll {
+
+SampleTable::SampleTable(std::initializer_list<std::initializer_list<double>> rows) {
+    if (rows.size() > 0) reserve(rows.size(), rows.begin()->size());
+    for (const auto& r : rows) push_back(r);
+}
+
+SampleTable::SampleTable(const SampleTable& other) {
+    if (other.rows_ == 0) return;
+    reserve(other.rows_, other.width_);
+    std::memcpy(data_, other.data_, other.rows_ * other.width_ * sizeof(double));
+    rows_ = other.rows_;
+}
+
+SampleTable::SampleTable(SampleTable&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)),
+      rows_(std::exchange(other.rows_, 0)),
+      width_(std::exchange(other.width_, 0)),
+      capacity_(std::exchange(other.capacity_, 0)) {}
+
+SampleTable& SampleTable::operator=(const SampleTable& other) {
+    if (this != &other) *this = SampleTable(other);
+    return *this;
+}
+
+SampleTable& SampleTable::operator=(SampleTable&& other) noexcept {
+    if (this != &other) {
+        std::free(data_);
+        data_ = std::exchange(other.data_, nullptr);
+        rows_ = std::exchange(other.rows_, 0);
+        width_ = std::exchange(other.width_, 0);
+        capacity_ = std::exchange(other.capacity_, 0);
+    }
+    return *this;
+}
+
+SampleTable::~SampleTable() { std::free(data_); }
+
+void SampleTable::reserve(std::size_t rows, std::size_t width) {
+    if (width == 0) throw std::invalid_argument("SampleTable: a row holds at least one value");
+    if (width_ != 0 && width != width_)
+        throw std::invalid_argument(fmt::format("SampleTable: rows of {} values asked for; the table's hold {}", width,
+                                                width_));
+    if (rows * width <= capacity_) {
+        width_ = width;
+        return;
+    }
+    const std::size_t bytes = rows * width * sizeof(double);
+    double* fresh = static_cast<double*>(allocateLargeBuffer(bytes));
+    if (rows_ > 0) std::memcpy(fresh, data_, rows_ * width_ * sizeof(double));
+    std::free(data_);
+    data_ = fresh;
+    width_ = width;
+    capacity_ = getLargeBufferCapacity(bytes) / sizeof(double);
+}
+
+double* SampleTable::grow(std::size_t width) {
+    if (width == 0) throw std::invalid_argument("SampleTable: a row holds at least one value");
+    if (width_ != 0 && width != width_)
+        throw std::invalid_argument(
+            fmt::format("SampleTable: a row of {} values appended to rows of {}", width, width_));
+    if ((rows_ + 1) * width > capacity_) reserve(std::max<std::size_t>(64, 2 * rows_), width);
+    width_ = width;
+    return data_ + rows_ * width_;
+}
+
+SampleTable::Row SampleTable::push_back(Row row) {
+    if (data_ && row.data() >= data_ && row.data() < data_ + capacity_) {  // one of ours: grow() may move it
+        const std::vector<double> copy(row.begin(), row.end());
+        return push_back(Row(copy));
+    }
+    double* at = grow(row.size());
+    std::copy(row.begin(), row.end(), at);
+    ++rows_;
+    return back();
+}
+
+SampleTable::Row SampleTable::append(double t, Row values) {
+    double* at = grow(1 + values.size());
+    at[0] = t;
+    std::copy(values.begin(), values.end(), at + 1);
+    ++rows_;
+    return back();
+}
+
+void SampleTable::set(std::size_t i, Row row) {
+    if (i >= rows_ || row.size() != width_)
+        throw std::invalid_argument(fmt::format("SampleTable::set: row {} of {} values; the table has {} rows of {}", i,
+                                                row.size(), rows_, width_));
+    std::copy(row.begin(), row.end(), data_ + i * width_);
+}
+
+bool operator==(const SampleTable& a, const SampleTable& b) {
+    if (a.rows_ != b.rows_ || (a.rows_ > 0 && a.width_ != b.width_)) return false;
+    return std::equal(a.data_, a.data_ + a.rows_ * a.width_, b.data_);
+}
+
+}  // namespace rockroll
