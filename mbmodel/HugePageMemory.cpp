@@ -40,7 +40,7 @@ void* HugePageArena::allocate(std::size_t bytes, std::size_t alignment) {
         throw std::invalid_argument("HugePageArena::allocate: at most 2 MB, aligned to a power of two up to 4096");
     const std::lock_guard<std::mutex> lock(mutex_);
     std::size_t at = (used_ + alignment - 1) & ~(alignment - 1);
-    if (at + bytes > kHugePageBytes) {
+    if (blocks_.empty() || at + bytes > kHugePageBytes) {
         blocks_.reserve(blocks_.size() + 1);  // then push_back cannot throw: no leaked block
         blocks_.push_back(allocateHugePageBlocks(kHugePageBytes));
         at = 0;

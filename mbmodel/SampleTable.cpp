@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fmt/format.h>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -16,7 +17,7 @@ SampleTable::SampleTable(std::initializer_list<std::initializer_list<double>> ro
     for (const auto& r : rows) push_back(r);
 }
 
-SampleTable::SampleTable(const SampleTable& other) {
+SampleTable::SampleTable(const SampleTable& other) : width_(other.width_) {
     if (other.rows_ == 0) return;
     reserve(other.rows_, other.width_);
     std::memcpy(data_, other.data_, other.rows_ * other.width_ * sizeof(double));
@@ -52,44 +53,47 @@ void SampleTable::reserve(std::size_t rows, std::size_t width) {
     if (width_ != 0 && width != width_)
         throw std::invalid_argument(fmt::format("SampleTable: rows of {} values asked for; the table's hold {}", width,
                                                 width_));
-    if (rows * width <= capacity_) {
-        width_ = width;
-        return;
-    }
-    const std::size_t bytes = rows * width * sizeof(double);
-    double* fresh = static_cast<double*>(allocateLargeBuffer(bytes));
-    if (rows_ > 0) std::memcpy(fresh, data_, rows_ * width_ * sizeof(double));
-    std::free(data_);
-    data_ = fresh;
+    if (rows > std::numeric_limits<std::size_t>::max() / sizeof(double) / width)
+        throw std::length_error(fmt::format("SampleTable: {} rows of {} values cannot be addressed", rows, width));
+    if (rows * width > capacity_) std::free(moveTo(rows * width));
     width_ = width;
-    capacity_ = getLargeBufferCapacity(bytes) / sizeof(double);
 }
 
-double* SampleTable::grow(std::size_t width) {
+double* SampleTable::moveTo(std::size_t values) {
+    const std::size_t bytes = values * sizeof(double);
+    double* fresh = static_cast<double*>(allocateLargeBuffer(bytes));
+    if (rows_ > 0) std::memcpy(fresh, data_, rows_ * width_ * sizeof(double));
+    capacity_ = getLargeBufferCapacity(bytes) / sizeof(double);
+    return std::exchange(data_, fresh);
+}
+
+double* SampleTable::grow(std::size_t width, double*& old) {
     if (width == 0) throw std::invalid_argument("SampleTable: a row holds at least one value");
     if (width_ != 0 && width != width_)
         throw std::invalid_argument(
             fmt::format("SampleTable: a row of {} values appended to rows of {}", width, width_));
-    if ((rows_ + 1) * width > capacity_) reserve(std::max<std::size_t>(64, 2 * rows_), width);
+    if (rows_ + 1 > std::numeric_limits<std::size_t>::max() / sizeof(double) / width / 2)
+        throw std::length_error(fmt::format("SampleTable: {} rows of {} values cannot be addressed", rows_ + 1, width));
+    if ((rows_ + 1) * width > capacity_) old = moveTo(std::max<std::size_t>(64, 2 * rows_) * width);
     width_ = width;
     return data_ + rows_ * width_;
 }
 
 SampleTable::Row SampleTable::push_back(Row row) {
-    if (data_ && row.data() >= data_ && row.data() < data_ + capacity_) {  // one of ours: grow() may move it
-        const std::vector<double> copy(row.begin(), row.end());
-        return push_back(Row(copy));
-    }
-    double* at = grow(row.size());
+    double* old = nullptr;  // `row` may lie there: freed after the copy
+    double* at = grow(row.size(), old);
     std::copy(row.begin(), row.end(), at);
+    std::free(old);
     ++rows_;
     return back();
 }
 
 SampleTable::Row SampleTable::append(double t, Row values) {
-    double* at = grow(1 + values.size());
+    double* old = nullptr;  // `values` may lie there: freed after the copy
+    double* at = grow(1 + values.size(), old);
     at[0] = t;
     std::copy(values.begin(), values.end(), at + 1);
+    std::free(old);
     ++rows_;
     return back();
 }
@@ -98,7 +102,7 @@ void SampleTable::set(std::size_t i, Row row) {
     if (i >= rows_ || row.size() != width_)
         throw std::invalid_argument(fmt::format("SampleTable::set: row {} of {} values; the table has {} rows of {}", i,
                                                 row.size(), rows_, width_));
-    std::copy(row.begin(), row.end(), data_ + i * width_);
+    std::memmove(data_ + i * width_, row.data(), width_ * sizeof(double));  // row may be a row of the table
 }
 
 bool operator==(const SampleTable& a, const SampleTable& b) {

@@ -19,7 +19,10 @@ public:
 
     class const_iterator {
     public:
-        using iterator_category = std::random_access_iterator_tag;
+        // A row is a span made on the fly (as std::views::transform's iterators): random
+        // access for C++20's concepts, input for the older iterator rules.
+        using iterator_concept = std::random_access_iterator_tag;
+        using iterator_category = std::input_iterator_tag;
         using value_type = Row;
         using difference_type = std::ptrdiff_t;
         using reference = Row;
@@ -60,7 +63,7 @@ public:
 
     std::size_t size() const { return rows_; }
     bool empty() const { return rows_ == 0; }
-    /// Values per row; 0 before the first row.
+    /// Values per row; 0 before the first row or reserve.
     std::size_t getWidth() const { return width_; }
     Row operator[](std::size_t i) const { return {data_ + i * width_, width_}; }
     /// The rows one after another, size() × getWidth() values.
@@ -71,21 +74,27 @@ public:
     const_iterator end() const { return {data_ + rows_ * width_, width_}; }
 
     /// Room for `rows` rows of `width` values (the width the rows must then have).
+    /// Throws std::length_error when that many values cannot be addressed.
     void reserve(std::size_t rows, std::size_t width);
-    /// Appends a row; the first row sets the width, and a row of another width throws
-    /// std::invalid_argument. Returns the stored row (valid until the next append).
+    /// Appends a row (it may be a row of the table); the first row sets the width, and a
+    /// row of another width throws std::invalid_argument. Returns the stored row (valid
+    /// until the next append).
     Row push_back(Row row);
     Row push_back(std::initializer_list<double> row) { return push_back(Row(row.begin(), row.size())); }
     /// Appends t followed by `values` (one row of 1 + values.size()).
     Row append(double t, Row values);
-    /// Overwrites row i with `row` (of the table's width).
+    /// Overwrites row i with `row` (of the table's width; it may be a row of the table).
     void set(std::size_t i, Row row);
     void set(std::size_t i, std::initializer_list<double> row) { set(i, Row(row.begin(), row.size())); }
 
     friend bool operator==(const SampleTable& a, const SampleTable& b);
 
 private:
-    double* grow(std::size_t width);  // where the next row goes
+    /// Moves the rows to a buffer of `values` values; returns the old buffer, which the
+    /// caller frees once it has read what it needs from it (a row appended from the table).
+    [[nodiscard]] double* moveTo(std::size_t values);
+    /// Where the next row of `width` values goes; `old` receives a buffer to free after the copy.
+    double* grow(std::size_t width, double*& old);
     double* data_ = nullptr;
     std::size_t rows_ = 0, width_ = 0, capacity_ = 0;  // capacity_ in values
 };

@@ -1,5 +1,6 @@
 #include "mbmodel/Simulation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -92,7 +93,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
                                 integ->getTime());
     };
     const long nOut = std::lround(settings.duration * settings.outputRate);
-    result.history.samples.reserve(size_t(nOut) + 1, result.history.names.size());
+    result.history.samples.reserve(size_t(std::max(0L, nOut)) + 1, result.history.names.size());
     guard.check(record(integ->getState()), result);
 
     for (long k = 1; k <= nOut && !result.stop; ++k) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -80,13 +81,43 @@ TEST(SampleTable, CopiesAreEqualAndIndependent) {
     EXPECT_EQ(SampleTable(), SampleTable());
 }
 
-TEST(SampleTable, AppendsItsOwnRowsAcrossGrowth) {
-    // A row of the table appended to it while the table moves to a larger block.
+TEST(SampleTable, AppendsAndSetsItsOwnRowsAcrossGrowth) {
+    // Rows of the table appended to it, each from an earlier row, while it moves to larger
+    // blocks (at 64, 128 and 256 rows), by push_back and by append; then a row set from
+    // another. Under the sanitize build a row read after its block was freed is reported.
+    for (const bool byAppend : {false, true}) {
+        SampleTable t;
+        t.push_back({0, 1, 2});
+        for (std::size_t k = 1; k < 300; ++k) {
+            const SampleTable::Row from = t[k / 2];
+            if (byAppend)
+                t.append(from[0] + 1000, from.subspan(1));
+            else
+                t.push_back(from);
+        }
+        ASSERT_EQ(t.size(), 300u);
+        for (std::size_t k = 1; k < 300; ++k) {
+            const double expected = t[k / 2][0] + (byAppend ? 1000 : 0);
+            EXPECT_EQ(toVector(t[k]), (std::vector<double>{expected, 1, 2}))
+                << k << (byAppend ? " append" : " push_back");
+        }
+        t.set(7, t[8]);
+        EXPECT_EQ(toVector(t[7]), toVector(t[8]));
+        t.set(7, t[7]);
+        EXPECT_EQ(toVector(t[7]), toVector(t[8]));
+    }
+}
+
+TEST(SampleTable, KeepsItsWidthWhenCopiedEmptyAndRefusesImpossibleSizes) {
     SampleTable t;
-    t.push_back({1, 2, 3});
-    for (int k = 0; k < 200; ++k) t.push_back(t.back());
-    EXPECT_EQ(t.size(), 201u);
-    for (const auto& row : t) EXPECT_EQ(toVector(row), (std::vector<double>{1, 2, 3}));
+    t.reserve(10, 4);
+    const SampleTable copy = t;
+    EXPECT_EQ(copy.getWidth(), 4u);
+    SampleTable c = copy;
+    EXPECT_THROW(c.push_back({1, 2}), std::invalid_argument);
+    EXPECT_THROW(t.reserve(std::size_t(-1) / 4, 4), std::length_error);
+    EXPECT_TRUE(t.empty());
+    static_assert(std::random_access_iterator<SampleTable::const_iterator>);
 }
 
 TEST(HugePageMemory, LargeBuffersAreWholeAlignedBlocks) {
@@ -105,6 +136,9 @@ TEST(HugePageMemory, LargeBuffersAreWholeAlignedBlocks) {
 }
 
 TEST(HugePageMemory, ArenaGivesAlignedDisjointStorage) {
+    HugePageArena empty;
+    EXPECT_NE(empty.allocate(0), nullptr);  // a fresh arena's first request makes its first block
+    EXPECT_EQ(empty.getBlockCount(), 1u);
     HugePageArena arena;
     EXPECT_EQ(arena.getBlockCount(), 0u);
     std::vector<std::pair<char*, std::size_t>> taken;
