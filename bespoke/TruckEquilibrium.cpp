@@ -656,15 +656,10 @@ Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const
 
 struct TruckModeCache::Factor : ModeFactor {};
 
-// The arena frees its blocks without destructors: what lives there must need none.
-static_assert(std::is_trivially_destructible_v<TruckModeCache::Factor> &&
-              std::is_trivially_destructible_v<std::atomic<TruckModeCache::Factor*>>);
-
-TruckModeCache::TruckModeCache(const TruckGeometry& g) : geometry_(g), arena_(std::make_unique<HugePageArena>()) {
-    void* slots = arena_->allocate(kModeCount * sizeof(std::atomic<Factor*>));
-    slots_ = static_cast<std::atomic<Factor*>*>(slots);
-    for (int i = 0; i < kModeCount; ++i) new (slots_ + i) std::atomic<Factor*>(nullptr);
-}
+TruckModeCache::TruckModeCache(const TruckGeometry& g)
+    : geometry_(g),
+      arena_(std::make_unique<HugePageArena>()),
+      slots_(arena_->makeArray<std::atomic<Factor*>>(kModeCount)) {}
 
 std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeometry& g) {
     static_assert(sizeof(TruckGeometry) % sizeof(double) == 0, "TruckGeometry holds doubles alone (compared bytewise)");
@@ -689,8 +684,7 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, c
     std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
-    // A thread that loses the race below leaves its copy unused.
-    Factor& made = *new (arena_->allocate(sizeof(Factor), alignof(Factor) > 64 ? alignof(Factor) : 64)) Factor;
+    Factor& made = *arena_->make<Factor>();  // a thread that loses the race below leaves its copy unused
     factorSystem(assembleMatrix(geometry_, in, mode, k), made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
@@ -1305,13 +1299,9 @@ struct ModeOrder {
 /// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
 const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
     using Slot = std::atomic<const ModeOrder*>;
-    static_assert(std::is_trivially_destructible_v<Slot> && std::is_trivially_destructible_v<ModeOrder>);
     struct Orders {
         HugePageArena arena;
-        Slot* slots;
-        Orders() : slots(static_cast<Slot*>(arena.allocate(TruckModeCache::kModeCount * sizeof(Slot)))) {
-            for (int i = 0; i < TruckModeCache::kModeCount; ++i) new (slots + i) Slot(nullptr);
-        }
+        Slot* slots = arena.makeArray<Slot>(TruckModeCache::kModeCount);
     };
     static Orders orders;
     Slot& slot = orders.slots[TruckModeCache::getIndex(previous)];
@@ -1324,10 +1314,9 @@ const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
         if (!seen.test(index)) seen.set(index), list.push_back(PackedMode::pack(m));
         return false;
     });
-    auto* modes = static_cast<PackedMode*>(orders.arena.allocate(list.size() * sizeof(PackedMode), 8));
+    PackedMode* modes = orders.arena.makeArray<PackedMode>(list.size());
     std::copy(list.begin(), list.end(), modes);
-    void* header = orders.arena.allocate(sizeof(ModeOrder), alignof(ModeOrder));
-    const ModeOrder* made = new (header) ModeOrder{modes, list.size()};
+    const ModeOrder* made = orders.arena.make<ModeOrder>(modes, list.size());
     const ModeOrder* expected = nullptr;
     if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel)) return *made;
     return *expected;  // another thread made the same order first (this copy stays unused in the arena)

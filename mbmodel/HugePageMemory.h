@@ -7,8 +7,12 @@
 // 20 s: 4 001 samples of 25 values, 200 pages) and the truck-mode cache's factorizations
 // live in such blocks. The advice is only advice: where the system gives no huge pages
 // (transparent huge pages "never") the blocks are ordinary pages.
+#include <algorithm>
 #include <cstddef>
 #include <mutex>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace rockroll {
@@ -35,6 +39,26 @@ public:
     /// `bytes` (at most kHugePageBytes) aligned to `alignment` (a power of two ≤ 4096),
     /// uninitialized.
     void* allocate(std::size_t bytes, std::size_t alignment = 64);
+    /// A T made from `args` (default-initialized without them) on its own cache line, or on
+    /// T's alignment if larger, kept until the arena goes: T must need no destructor.
+    template <class T, class... Args>
+    T* make(Args&&... args) {
+        static_assert(std::is_trivially_destructible_v<T>, "the arena frees its blocks without destructors");
+        void* p = allocate(sizeof(T), std::max<std::size_t>(alignof(T), 64));
+        if constexpr (sizeof...(Args) == 0)
+            return new (p) T;
+        else
+            return new (p) T(std::forward<Args>(args)...);
+    }
+    /// n value-initialized Ts, one after another, as make.
+    template <class T>
+    T* makeArray(std::size_t n) {
+        static_assert(std::is_trivially_destructible_v<T>, "the arena frees its blocks without destructors");
+        const std::size_t alignment = std::max<std::size_t>(alignof(T), 64);
+        T* first = static_cast<T*>(allocate(std::max<std::size_t>(1, n) * sizeof(T), alignment));
+        for (std::size_t i = 0; i < n; ++i) new (first + i) T();
+        return first;
+    }
     std::size_t getBlockCount() const;
 
 private:

@@ -48,13 +48,17 @@ SampleTable& SampleTable::operator=(SampleTable&& other) noexcept {
 
 SampleTable::~SampleTable() { std::free(data_); }
 
-void SampleTable::reserve(std::size_t rows, std::size_t width) {
+void SampleTable::checkRows(std::size_t rows, std::size_t width) const {
     if (width == 0) throw std::invalid_argument("SampleTable: a row holds at least one value");
     if (width_ != 0 && width != width_)
-        throw std::invalid_argument(fmt::format("SampleTable: rows of {} values asked for; the table's hold {}", width,
+        throw std::invalid_argument(fmt::format("SampleTable: rows of {} values given; the table's hold {}", width,
                                                 width_));
     if (rows > std::numeric_limits<std::size_t>::max() / sizeof(double) / width)
         throw std::length_error(fmt::format("SampleTable: {} rows of {} values cannot be addressed", rows, width));
+}
+
+void SampleTable::reserve(std::size_t rows, std::size_t width) {
+    checkRows(rows, width);
     if (rows * width > capacity_) std::free(moveTo(rows * width));
     width_ = width;
 }
@@ -68,13 +72,9 @@ double* SampleTable::moveTo(std::size_t values) {
 }
 
 double* SampleTable::grow(std::size_t width, double*& old) {
-    if (width == 0) throw std::invalid_argument("SampleTable: a row holds at least one value");
-    if (width_ != 0 && width != width_)
-        throw std::invalid_argument(
-            fmt::format("SampleTable: a row of {} values appended to rows of {}", width, width_));
-    if (rows_ + 1 > std::numeric_limits<std::size_t>::max() / sizeof(double) / width / 2)
-        throw std::length_error(fmt::format("SampleTable: {} rows of {} values cannot be addressed", rows_ + 1, width));
-    if ((rows_ + 1) * width > capacity_) old = moveTo(std::max<std::size_t>(64, 2 * rows_) * width);
+    const std::size_t rows = std::max<std::size_t>(64, 2 * rows_);  // room for rows_ + 1, doubling
+    checkRows(rows, width);
+    if ((rows_ + 1) * width > capacity_) old = moveTo(rows * width);
     width_ = width;
     return data_ + rows_ * width_;
 }

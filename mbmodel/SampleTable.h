@@ -90,6 +90,8 @@ public:
     friend bool operator==(const SampleTable& a, const SampleTable& b);
 
 private:
+    /// Throws unless `rows` rows of `width` values fit this table and can be addressed.
+    void checkRows(std::size_t rows, std::size_t width) const;
     /// Moves the rows to a buffer of `values` values; returns the old buffer, which the
     /// caller frees once it has read what it needs from it (a row appended from the table).
     [[nodiscard]] double* moveTo(std::size_t values);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <iterator>
@@ -154,6 +155,13 @@ TEST(HugePageMemory, ArenaGivesAlignedDisjointStorage) {
     EXPECT_GE(arena.getBlockCount(), 2u);
     for (std::size_t k = 0; k < taken.size(); ++k)
         for (std::size_t i = 0; i < taken[k].second; ++i) ASSERT_EQ(taken[k].first[i], char(k));
+    // Objects on their own cache lines; arrays value-initialized.
+    std::atomic<const int*>* slots = arena.makeArray<std::atomic<const int*>>(1000);
+    for (int i = 0; i < 1000; ++i) ASSERT_EQ(slots[i].load(), nullptr);
+    const std::pair<int, double>* pair = arena.make<std::pair<int, double>>(3, 0.5);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(slots) % 64, 0u);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(pair) % 64, 0u);
+    EXPECT_EQ(*pair, std::make_pair(3, 0.5));
     EXPECT_NO_THROW(arena.allocate(kHugePageBytes));
     EXPECT_THROW(arena.allocate(kHugePageBytes + 1), std::invalid_argument);
     EXPECT_THROW(arena.allocate(8, 3), std::invalid_argument);
