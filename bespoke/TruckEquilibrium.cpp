@@ -33,6 +33,12 @@ enum CheckedQuantity {
     kRimForce = 0, kSideBearingForce = 2, kWheelForce = 4, kWedgeFriction = 6, kLateralFriction = 8,
     kRimGap = 9, kPadGap = 11, kTreadLift = 13, kCompression = 15, kLateral = 17, kCheckedCount = 18
 };
+/// The units of a violation: forces in 10 kN, lengths in 0.1 mm.
+constexpr double kForceUnit = 1e4, kLengthUnit = 1e-4;
+/// Whether every mode checks q ≥ 0, as it is (the contact and wheel forces, the gaps, the lifts).
+constexpr bool isCheckedAtLeastZero(int q) {
+    return (q >= kRimForce && q < kWedgeFriction) || (q >= kRimGap && q < kCompression);
+}
 using Row = Eigen::Matrix<double, 1, N>;
 
 /// A quantity linear in the unknowns: row·x + c.
@@ -415,23 +421,23 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
     const Checked zero{};
     auto exact = [](double value) { return Checked{value}; };
     for (int i : {0, 1})
-        if (!need(v(kRimForce + i), zero, 1e4) || !need(v(kSideBearingForce + i), zero, 1e4) ||
-            !need(v(kWheelForce + i), zero, 1e4))
+        if (!need(v(kRimForce + i), zero, kForceUnit) || !need(v(kSideBearingForce + i), zero, kForceUnit) ||
+            !need(v(kWheelForce + i), zero, kForceUnit))
             return;
     for (int i : {0, 1}) {
-        if (!need(v(kRimGap + i), zero, 1e-4) || !need(v(kPadGap + i), zero, 1e-4) ||
-            !need(v(kTreadLift + i), zero, 1e-4))
+        if (!need(v(kRimGap + i), zero, kLengthUnit) || !need(v(kPadGap + i), zero, kLengthUnit) ||
+            !need(v(kTreadLift + i), zero, kLengthUnit))
             return;
         const Checked Z = v(kCompression + i);
         switch (mode.spring[i]) {
         case SpringSegment::Free:
-            if (!need(zero, Z, 1e-4)) return;
+            if (!need(zero, Z, kLengthUnit)) return;
             break;
         case SpringSegment::Linear:
-            if (!need(Z, zero, 1e-4) || !need(exact(g.travel), Z, 1e-4)) return;
+            if (!need(Z, zero, kLengthUnit) || !need(exact(g.travel), Z, kLengthUnit)) return;
             break;
         case SpringSegment::Bottomed:
-            if (!need(Z, exact(g.travel), 1e-4)) return;
+            if (!need(Z, exact(g.travel), kLengthUnit)) return;
             break;
         }
         const Checked dZ{Z.value - in.compressionOld[i], Z.errorOf,
@@ -439,14 +445,14 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
         switch (mode.wedge[i]) {
         case WedgeState::Stick: {
             const Checked phi = v(kWedgeFriction + i);
-            if (!need(exact(g.Fv), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, 1e4)) return;
+            if (!need(exact(g.Fv), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, kForceUnit)) return;
             break;
         }
         case WedgeState::SlipUp:  // Z falling
-            if (!need(zero, dZ, 1e-4)) return;
+            if (!need(zero, dZ, kLengthUnit)) return;
             break;
         case WedgeState::SlipDown:  // Z rising
-            if (!need(dZ, zero, 1e-4)) return;
+            if (!need(dZ, zero, kLengthUnit)) return;
             break;
         }
     }
@@ -454,23 +460,23 @@ void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const Truc
     const Checked dY{Y.value - in.lateralOld, Y.errorOf, Y.errorAdded + 1e-15 * std::abs(in.lateralOld)};
     switch (mode.gib) {
     case GibContact::Open:
-        if (!need(Y, exact(-g.gibClearance), 1e-4) || !need(exact(g.gibClearance), Y, 1e-4)) return;
+        if (!need(Y, exact(-g.gibClearance), kLengthUnit) || !need(exact(g.gibClearance), Y, kLengthUnit)) return;
         break;
     case GibContact::Positive:
-        if (!need(Y, exact(g.gibClearance), 1e-4)) return;
+        if (!need(Y, exact(g.gibClearance), kLengthUnit)) return;
         break;
     case GibContact::Negative:
-        if (!need(exact(-g.gibClearance), Y, 1e-4)) return;
+        if (!need(exact(-g.gibClearance), Y, kLengthUnit)) return;
         break;
     }
     switch (mode.lateralWedge) {
     case WedgeState::Stick: {
         const Checked phi = v(kLateralFriction);
-        need(exact(2 * g.Fh), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, 1e4);
+        need(exact(2 * g.Fh), Checked{std::abs(phi.value), phi.errorOf, phi.errorAdded}, kForceUnit);
         break;
     }
-    case WedgeState::SlipUp: need(dY, zero, 1e-4); break;
-    case WedgeState::SlipDown: need(zero, dY, 1e-4); break;
+    case WedgeState::SlipUp: need(dY, zero, kLengthUnit); break;
+    case WedgeState::SlipDown: need(zero, dY, kLengthUnit); break;
     }
 }
 
@@ -659,7 +665,17 @@ struct TruckModeCache::Factor : ModeFactor {};
 TruckModeCache::TruckModeCache(const TruckGeometry& g)
     : geometry_(g),
       arena_(std::make_unique<HugePageArena>()),
-      slots_(arena_->makeArray<std::atomic<Factor*>>(kModeCount)) {}
+      slots_(arena_->makeArray<std::atomic<Factor*>>(kModeCount)),
+      screenHints_(arena_->makeArray<std::atomic<std::int8_t>>(kModeCount)) {}
+
+int TruckModeCache::getScreenHint(int modeIndex) const {
+    return int(screenHints_[modeIndex].load(std::memory_order_relaxed)) - 1;
+}
+
+void TruckModeCache::setScreenHint(int modeIndex, int quantity) const {
+    if (!isCheckedAtLeastZero(quantity)) quantity = -1;
+    screenHints_[modeIndex].store(std::int8_t(quantity + 1), std::memory_order_relaxed);
+}
 
 std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeometry& g) {
     static_assert(sizeof(TruckGeometry) % sizeof(double) == 0, "TruckGeometry holds doubles alone (compared bytewise)");
@@ -719,6 +735,13 @@ struct ScreenValues {
                (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor);
     }
     double getError(const Checked& v) const { return (v.errorOf >= 0 ? calcError(v.errorOf) : 0.0) + v.errorAdded; }
+    /// Whether the check "v ≥ minimum" fails by more than kConsistentViolation beyond the
+    /// error bounds (a check whose value alone passes needs no bound).
+    bool isCertainlyViolated(const Checked& v, const Checked& minimum, double unit) const {
+        const double excess = minimum.value - v.value;
+        if (!(excess / unit > kConsistentViolation)) return false;
+        return (excess - (getError(minimum) + getError(v))) / unit > kConsistentViolation;
+    }
 };
 
 /// What every mode of one search shares: the kinematics and the three spring laws per side.
@@ -753,19 +776,28 @@ struct SearchContext {
     /// kConsistentViolation by more than the screen's error bound on the quantities,
     /// each computed as checkRows·b + c instead of from the solution. Then isConsistent
     /// is false too; otherwise nothing is concluded.
+    ///
+    /// The answer is whether any check fails so, in whatever order they are tried: the
+    /// screen first tries the check "q ≥ 0" that last failed for this mode
+    /// (TruckModeCache::getScreenHint), then every check in checkInequalities' order.
     bool isCertainlyInconsistent(const TruckMode& mode) const {
         const TruckModeCache::Factor& f = cache.getFactor(mode, in);
         if (!f.invertible) return true;
         const Eigen::Matrix<double, N, 1> b = getRhs(mode);
         const ScreenValues value{checkedConstant, f, b};
-        bool certain = false;
-        checkInequalities(g, in, mode, value, [&certain, &value](Checked v, Checked minimum, double unit) {
-            const double excess = minimum.value - v.value;
-            if (!(excess / unit > kConsistentViolation)) return true;  // undecided whatever the bound
-            certain = (excess - (value.getError(minimum) + value.getError(v))) / unit > kConsistentViolation;
-            return !certain;
+        const int index = TruckModeCache::getIndex(mode);
+        const int hint = cache.getScreenHint(index);
+        if (hint >= 0 && value.isCertainlyViolated(value(hint), Checked{}, hint < kWedgeFriction ? kForceUnit : kLengthUnit))
+            return true;
+        int failed = -2;  // none
+        checkInequalities(g, in, mode, value, [&failed, &value](Checked v, Checked minimum, double unit) {
+            if (!value.isCertainlyViolated(v, minimum, unit)) return true;
+            failed = isCheckedAtLeastZero(v.errorOf) ? v.errorOf : -1;  // "v ≥ 0" on the quantity itself
+            return false;
         });
-        return certain;
+        if (failed == -2) return false;
+        if (failed != hint) cache.setScreenHint(index, failed);
+        return true;
     }
     bool isConsistent(const TruckMode& mode) const {
         return isConsistentFactored(g, in, mode, k, cache.getFactor(mode, in), getRhs(mode));

@@ -48,6 +48,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -174,6 +175,14 @@ public:
     }
     struct Factor;
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
+    /// The checked quantity (TruckCheckedQuantities' order) of the check "q ≥ 0" that the
+    /// search's screen last found certainly violated for the mode of this index, or −1;
+    /// the screen tries it first. It orders the screen's work and never its answer, so
+    /// threads may race on it (relaxed atomics; test
+    /// ReducedModel.ScreenHintsOrderTheWorkNotTheAnswer). A quantity that no mode checks as
+    /// "q ≥ 0" (the frictions, the compressions, the lateral deflection) is stored as −1.
+    int getScreenHint(int modeIndex) const;
+    void setScreenHint(int modeIndex, int quantity) const;
 
 private:
     TruckGeometry geometry_;
@@ -183,6 +192,7 @@ private:
     /// factoring itself on a virtual machine (bench/README.md, "Bespoke models").
     std::unique_ptr<HugePageArena> arena_;
     std::atomic<Factor*>* slots_;  ///< kModeCount, in arena_; null until factored
+    std::atomic<std::int8_t>* screenHints_;  ///< kModeCount, in arena_: the hint + 1 (0: none)
 };
 
 /// solveTruckMode with the cache's factorization (bit-identical).

@@ -452,6 +452,44 @@ TEST(ReducedModel, PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch) {
     EXPECT_LT(screened.solves, pruned.solves / 4);  // the screen saves most of the rest
 }
 
+// The screen tries first the check "q ≥ 0" that last failed for a mode
+// (TruckModeCache::getScreenHint). The hint orders its work, never its answer: the same
+// searches give the same solutions, bit for bit, and the same counts (how many modes the
+// screen ruled out) with a fresh cache, with one whose hints earlier searches set, and
+// with one whose every hint is set by hand to some check "q ≥ 0", mostly not the one that fails.
+TEST(ReducedModel, ScreenHintsOrderTheWorkNotTheAnswer) {
+    const ReducedHalfCarModel m = makeLevelModel();
+    const TruckGeometry& g = m.getTruckGeometry();
+    const auto modes = enumerateTruckModes();
+    const TruckModeCache fresh(g), warmed(g), forced(g);
+    for (const TruckInputs& in : makeScatteredInputs(m, 40, 3))  // other states set the warmed cache's hints
+        for (int k = 0; k < 3; ++k) findTruckEquilibrium(in, modes[size_t(k * 1931) % modes.size()], warmed);
+    const int atLeastZero[12] = {0, 1, 2, 3, 4, 5, 9, 10, 11, 12, 13, 14};  // forces, gaps, lifts
+    for (int i = 0; i < TruckModeCache::kModeCount; ++i) forced.setScreenHint(i, atLeastZero[i % 12]);
+    int hinted = 0;
+    for (int i = 0; i < TruckModeCache::kModeCount; ++i) hinted += warmed.getScreenHint(i) >= 0 ? 1 : 0;
+    EXPECT_GT(hinted, 100) << "the warming searches set too few hints to test";
+    TruckSearchCounts a, b, c;
+    const auto inputs = makeScatteredInputs(m, 80, 13);
+    for (size_t k = 0; k < inputs.size(); ++k) {
+        const TruckMode& previous = modes[(k * 7919) % modes.size()];
+        const TruckSolution x = findTruckEquilibrium(inputs[k], previous, fresh, &a);
+        expectBitIdentical(findTruckEquilibrium(inputs[k], previous, warmed, &b), x);
+        expectBitIdentical(findTruckEquilibrium(inputs[k], previous, forced, &c), x);
+    }
+    EXPECT_GT(a.screened, 1000);
+    for (const TruckSearchCounts* n : {&b, &c}) {
+        EXPECT_EQ(n->solves, a.solves);
+        EXPECT_EQ(n->screened, a.screened);
+        EXPECT_EQ(n->kinematic, a.kinematic);
+        EXPECT_EQ(n->skipped, a.skipped);
+        EXPECT_EQ(n->enumerations, a.enumerations);
+    }
+    // A quantity no mode checks as "q ≥ 0" is kept as no hint.
+    forced.setScreenHint(0, 6);
+    EXPECT_EQ(forced.getScreenHint(0), -1);
+}
+
 // The screen's error bound (kScreenRelativeError of the size of each quantity's terms,
 // and a floor for the solve's rounding) covers the difference between the screened
 // quantity and the solved one with a margin of 100: every mode with an invertible
