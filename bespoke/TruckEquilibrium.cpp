@@ -48,26 +48,18 @@ struct Linear {
     double evaluate(const Eigen::Matrix<double, N, 1>& x) const { return row.dot(x) + c; }
 };
 
-bool closesRim(CarBodySupport s, int side) {
-    using S = CarBodySupport;
-    switch (s) {
-    case S::TwoPointCenterPlate: return true;
-    case S::CornerLeft: case S::SideBearingAndCornerLeft: return side == 0;
-    case S::CornerRight: case S::SideBearingAndCornerRight: return side == 1;
-    default: return false;
-    }
-}
+/// The contacts each support closes and the wheels each wheel contact lifts, [choice][side]
+/// (CarBodySupport: two-point, corner L, R, side bearing and corner L, R, side bearing L, R,
+/// none; WheelContact: both, lift L, R).
+constexpr bool kClosesRim[8][2] = {{true, true},  {true, false}, {false, true}, {true, false},
+                                   {false, true}, {false, false}, {false, false}, {false, false}};
+constexpr bool kClosesSideBearing[8][2] = {{false, false}, {false, false}, {false, false}, {true, false},
+                                           {false, true},  {true, false},  {false, true},  {false, false}};
+constexpr bool kLiftsWheel[3][2] = {{false, false}, {true, false}, {false, true}};
 
-bool closesSideBearing(CarBodySupport s, int side) {
-    using S = CarBodySupport;
-    if (s == S::SideBearingAndCornerLeft || s == S::SideBearingLeft) return side == 0;
-    if (s == S::SideBearingAndCornerRight || s == S::SideBearingRight) return side == 1;
-    return false;
-}
-
-bool liftsWheel(WheelContact w, int side) {
-    return (w == WheelContact::LiftLeft && side == 0) || (w == WheelContact::LiftRight && side == 1);
-}
+bool closesRim(CarBodySupport s, int side) { return kClosesRim[int(s)][side]; }
+bool closesSideBearing(CarBodySupport s, int side) { return kClosesSideBearing[int(s)][side]; }
+bool liftsWheel(WheelContact w, int side) { return kLiftsWheel[int(w)][side]; }
 
 struct Kinematics {
     std::array<Linear, 2> rimGap, padGap, compression, treadLift;
@@ -696,8 +688,20 @@ std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeome
 
 TruckModeCache::~TruckModeCache() = default;  // the factorizations are trivially destructible, in arena_
 
-const TruckModeCache::Factor& TruckModeCache::getFactor(const TruckMode& mode, const TruckInputs& in) const {
-    std::atomic<Factor*>& slot = slots_[getIndex(getMatrixClass(mode))];
+namespace {
+const std::array<std::uint16_t, TruckModeCache::kModeCount> kClassIndex = [] {
+    std::array<std::uint16_t, TruckModeCache::kModeCount> table{};
+    for (const TruckMode& m : enumerateTruckModes())
+        table[size_t(TruckModeCache::getIndex(m))] = std::uint16_t(TruckModeCache::getIndex(TruckModeCache::getMatrixClass(m)));
+    return table;
+}();
+}  // namespace
+
+int TruckModeCache::getClassIndex(int modeIndex) { return kClassIndex[size_t(modeIndex)]; }
+
+const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const TruckMode& mode,
+                                                        const TruckInputs& in) const {
+    std::atomic<Factor*>& slot = slots_[kClassIndex[size_t(modeIndex)]];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
     Factor& made = *arena_->make<Factor>();  // a thread that loses the race below leaves its copy unused
@@ -769,9 +773,11 @@ struct SearchContext {
         rhs.fill(mode, {springConstant[0][int(mode.spring[0])], springConstant[1][int(mode.spring[1])]}, b);
         return b;
     }
-    TruckSolution solve(const TruckMode& mode) const {
-        return solveFactored(g, in, mode, k, getSprings(mode), cache.getFactor(mode, in), getRhs(mode));
+    /// index: the mode's TruckModeCache::getIndex.
+    TruckSolution solve(const TruckMode& mode, int index) const {
+        return solveFactored(g, in, mode, k, getSprings(mode), cache.getFactor(index, mode, in), getRhs(mode));
     }
+    TruckSolution solve(const TruckMode& mode) const { return solve(mode, TruckModeCache::getIndex(mode)); }
     /// Whether the mode's checks fail beyond doubt: a violation above
     /// kConsistentViolation by more than the screen's error bound on the quantities,
     /// each computed as checkRows·b + c instead of from the solution. Then isConsistent
@@ -780,12 +786,11 @@ struct SearchContext {
     /// The answer is whether any check fails so, in whatever order they are tried: the
     /// screen first tries the check "q ≥ 0" that last failed for this mode
     /// (TruckModeCache::getScreenHint), then every check in checkInequalities' order.
-    bool isCertainlyInconsistent(const TruckMode& mode) const {
-        const TruckModeCache::Factor& f = cache.getFactor(mode, in);
+    bool isCertainlyInconsistent(const TruckMode& mode, int index) const {
+        const TruckModeCache::Factor& f = cache.getFactor(index, mode, in);
         if (!f.invertible) return true;
         const Eigen::Matrix<double, N, 1> b = getRhs(mode);
         const ScreenValues value{checkedConstant, f, b};
-        const int index = TruckModeCache::getIndex(mode);
         const int hint = cache.getScreenHint(index);
         if (hint >= 0 && value.isCertainlyViolated(value(hint), Checked{}, hint < kWedgeFriction ? kForceUnit : kLengthUnit))
             return true;
@@ -799,8 +804,8 @@ struct SearchContext {
         if (failed != hint) cache.setScreenHint(index, failed);
         return true;
     }
-    bool isConsistent(const TruckMode& mode) const {
-        return isConsistentFactored(g, in, mode, k, cache.getFactor(mode, in), getRhs(mode));
+    bool isConsistent(const TruckMode& mode, int index) const {
+        return isConsistentFactored(g, in, mode, k, cache.getFactor(index, mode, in), getRhs(mode));
     }
 };
 
@@ -1299,12 +1304,14 @@ bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
     return false;
 }
 
-/// A mode in 8 bytes, for the search orders.
+/// A mode in 10 bytes, with its TruckModeCache::getIndex, for the search orders.
 struct PackedMode {
     std::uint8_t support, wheels, wedge0, wedge1, spring0, spring1, lateralWedge, gib;
+    std::uint16_t index;
     static PackedMode pack(const TruckMode& m) {
         return {std::uint8_t(m.support), std::uint8_t(m.wheels), std::uint8_t(m.wedge[0]), std::uint8_t(m.wedge[1]),
-                std::uint8_t(m.spring[0]), std::uint8_t(m.spring[1]), std::uint8_t(m.lateralWedge), std::uint8_t(m.gib)};
+                std::uint8_t(m.spring[0]), std::uint8_t(m.spring[1]), std::uint8_t(m.lateralWedge), std::uint8_t(m.gib),
+                std::uint16_t(TruckModeCache::getIndex(m))};
     }
     TruckMode unpack() const {
         TruckMode m;
@@ -1372,7 +1379,7 @@ const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
 bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bounds, const TruckMode& previous,
                          bool screen, TruckSearchCounts& n, TruckSolution& found) {
     KinematicBounds kinematic(context.g, context.in, context.k);
-    auto test = [&](const TruckMode& m) {
+    auto test = [&](const TruckMode& m, int index) {
         if (bounds.getBound(m) > kConsistentViolation) {
             ++n.skipped;
             return false;
@@ -1381,27 +1388,27 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
             ++n.kinematic;
             return false;
         }
-        if (screen && context.isCertainlyInconsistent(m)) {
+        if (screen && context.isCertainlyInconsistent(m, index)) {
             ++n.screened;
             return false;
         }
         ++n.solves;
-        if (!context.isConsistent(m)) return false;
-        found = context.solve(m);
+        if (!context.isConsistent(m, index)) return false;
+        found = context.solve(m, index);
         return true;
     };
     const ModeOrder& neighbours = getNeighbourOrder(previous);
     for (const PackedMode& m : neighbours)
-        if (test(m.unpack())) return true;
+        if (test(m.unpack(), m.index)) return true;
     // The enumeration leaves out what the neighbour part considered.
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
-    for (const PackedMode& m : neighbours) seen.set(size_t(TruckModeCache::getIndex(m.unpack())));
+    for (const PackedMode& m : neighbours) seen.set(m.index);
     auto consider = [&](const TruckMode& m) {
-        const size_t index = size_t(TruckModeCache::getIndex(m));
-        if (seen.test(index)) return false;
-        seen.set(index);
-        return test(m);
+        const int index = TruckModeCache::getIndex(m);
+        if (seen.test(size_t(index))) return false;
+        seen.set(size_t(index));
+        return test(m, index);
     };
     ++n.enumerations;
     // enumerateTruckModes' order, with the bound's factors tested first.

@@ -173,8 +173,14 @@ public:
         if (c.gib == GibContact::Negative) c.gib = GibContact::Positive;
         return c;
     }
+    /// getIndex(getMatrixClass(m)) from getIndex(m), by a table.
+    static int getClassIndex(int modeIndex);
     struct Factor;
-    const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const;
+    const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const {
+        return getFactor(getIndex(mode), mode, anyInputs);
+    }
+    /// getFactor with the mode's getIndex already known.
+    const Factor& getFactor(int modeIndex, const TruckMode& mode, const TruckInputs& anyInputs) const;
     /// The checked quantity (TruckCheckedQuantities' order) of the check "q ≥ 0" that the
     /// search's screen last found certainly violated for the mode of this index, or −1;
     /// the screen tries it first. It orders the screen's work and never its answer, so

@@ -227,7 +227,10 @@ TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
     const ReducedHalfCarModel m = makeLevelModel();
     const TruckGeometry& g = m.getTruckGeometry();
     const auto modes = enumerateTruckModes();
-    for (size_t i = 0; i < modes.size(); ++i) ASSERT_EQ(TruckModeCache::getIndex(modes[i]), int(i));
+    for (size_t i = 0; i < modes.size(); ++i) {
+        ASSERT_EQ(TruckModeCache::getIndex(modes[i]), int(i));
+        ASSERT_EQ(TruckModeCache::getClassIndex(int(i)), TruckModeCache::getIndex(TruckModeCache::getMatrixClass(modes[i])));
+    }
     auto direct = [&](const TruckInputs& in, const TruckMode& previous) {  // findTruckEquilibrium's order
         TruckSolution best = solveTruckMode(g, in, previous);
         if (best.consistent) return best;
