@@ -110,6 +110,13 @@ Linear makeSpringForce(const TruckGeometry& g, const Linear& Z, SpringSegment se
     P.c = calcSpringConstant(g, Z.c, seg);
     return P;
 }
+/// A mode's two spring forces P_i = row_i·x + c_i (makeSpringForce's rows and constants).
+struct SpringForces {
+    std::array<const Row*, 2> row{};
+    std::array<double, 2> c{};
+    double evaluate(int i, const Eigen::Matrix<double, N, 1>& x) const { return row[size_t(i)]->dot(x) + c[size_t(i)]; }
+};
+
 /// The mode's 15 equations A·x = b (x unscaled: m, rad, N).
 void assembleSystem(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
                     const std::array<Linear, 2>& P, Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, N, 1>& b) {
@@ -499,7 +506,7 @@ struct SolvedValues {
 
 /// Solves with the factorization and checks every inequality of the mode.
 TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                            const std::array<Linear, 2>& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b,
+                            const SpringForces& P, const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b,
                             TruckSubstitution substitution = TruckSubstitution::Sparse) {
     TruckSolution sol;
     sol.mode = mode;
@@ -519,7 +526,7 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
         sol.rim[i] = x[FCL + i], sol.sideBearing[i] = x[FSL + i], sol.wheel[i] = x[WL + i];
         sol.friction[i] = x[PHIL + i];
         sol.compression[i] = quantity[size_t(kCompression + i)];
-        sol.spring[i] = P[i].evaluate(x);
+        sol.spring[i] = P.evaluate(i, x);
         sol.wheelLift[i] = std::max(0.0, quantity[size_t(kTreadLift + i)]);
         sol.wedgeAnchor[i] =
             mode.wedge[i] == WedgeState::Stick ? in.wedgeAnchor[i] : sol.compression[i] - sol.friction[i] / g.kBristle;
@@ -607,7 +614,8 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     assembleSystem(g, in, mode, k, P, A, b);
     ModeFactor f;
     factorSystem(A, f);
-    return solveFactored(g, in, mode, k, P, f, b, substitution);
+    const SpringForces springs{{&P[0].row, &P[1].row}, {P[0].c, P[1].c}};
+    return solveFactored(g, in, mode, k, springs, f, b, substitution);
 }
 
 namespace {
@@ -654,11 +662,21 @@ Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const
 
 struct TruckModeCache::Factor : ModeFactor {};
 
+struct TruckModeCache::SpringRows {
+    std::array<std::array<Row, 3>, 2> row;  ///< [side][SpringSegment]
+    explicit SpringRows(const TruckGeometry& g) {
+        const Kinematics k = makeKinematics(g, TruckInputs{});  // the rows do not depend on the inputs
+        for (int i : {0, 1})
+            for (int seg = 0; seg < 3; ++seg) row[size_t(i)][size_t(seg)] = makeSpringForce(g, k.compression[i], SpringSegment(seg)).row;
+    }
+};
+
 TruckModeCache::TruckModeCache(const TruckGeometry& g)
     : geometry_(g),
       arena_(std::make_unique<HugePageArena>()),
       slots_(arena_->makeArray<std::atomic<Factor*>>(kModeCount)),
-      screenHints_(arena_->makeArray<std::atomic<std::int8_t>>(kModeCount)) {}
+      screenHints_(arena_->makeArray<std::atomic<std::int8_t>>(kModeCount)),
+      springRows_(arena_->make<SpringRows>(g)) {}
 
 int TruckModeCache::getScreenHint(int modeIndex) const {
     return int(screenHints_[modeIndex].load(std::memory_order_relaxed)) - 1;
@@ -765,8 +783,10 @@ struct SearchContext {
     }
     RhsTable rhs{g, in, k};  // after k
     /// The mode's spring laws, made when a solution is built (its spring forces).
-    std::array<Linear, 2> getSprings(const TruckMode& mode) const {
-        return {makeSpringForce(g, k.compression[0], mode.spring[0]), makeSpringForce(g, k.compression[1], mode.spring[1])};
+    SpringForces getSprings(const TruckMode& mode) const {
+        const TruckModeCache::SpringRows& rows = cache.getSpringRows();
+        const int s0 = int(mode.spring[0]), s1 = int(mode.spring[1]);
+        return {{&rows.row[0][size_t(s0)], &rows.row[1][size_t(s1)]}, {springConstant[0][s0], springConstant[1][s1]}};
     }
     Eigen::Matrix<double, N, 1> getRhs(const TruckMode& mode) const {
         Eigen::Matrix<double, N, 1> b;

@@ -181,6 +181,10 @@ public:
     }
     /// getFactor with the mode's getIndex already known.
     const Factor& getFactor(int modeIndex, const TruckMode& mode, const TruckInputs& anyInputs) const;
+    /// The spring forces' rows in the unknowns, by side and segment: like the matrices, a
+    /// function of the geometry alone (the inputs reach the constants).
+    struct SpringRows;
+    const SpringRows& getSpringRows() const { return *springRows_; }
     /// The checked quantity (TruckCheckedQuantities' order) of the check "q ≥ 0" that the
     /// search's screen last found certainly violated for the mode of this index, or −1;
     /// the screen tries it first. It orders the screen's work and never its answer, so
@@ -199,6 +203,7 @@ private:
     std::unique_ptr<HugePageArena> arena_;
     std::atomic<Factor*>* slots_;  ///< kModeCount, in arena_; null until factored
     std::atomic<std::int8_t>* screenHints_;  ///< kModeCount, in arena_: the hint + 1 (0: none)
+    const SpringRows* springRows_;  ///< in arena_
 };
 
 /// solveTruckMode with the cache's factorization (bit-identical).
