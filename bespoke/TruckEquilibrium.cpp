@@ -518,6 +518,8 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
     // Every checked quantity once: the solution's fields and the checks read the same values.
     std::array<double, kCheckedCount> quantity;
     const SolvedValues solved{k, x};
+    // Unrolled, so that each quantity's row is chosen at compile time (a third of the loop's cost).
+#pragma GCC unroll 18
     for (int q = 0; q < kCheckedCount; ++q) quantity[size_t(q)] = solved(q).value;
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
     sol.yBolster = x[YB], sol.pinForce = x[FH], sol.lateralFriction = x[PHIH];
