@@ -35,6 +35,8 @@ enum CheckedQuantity {
 };
 /// The units of a violation: forces in 10 kN, lengths in 0.1 mm.
 constexpr double kForceUnit = 1e4, kLengthUnit = 1e-4;
+/// The unit of a violation of a check on quantity q (checkInequalities).
+constexpr double getUnit(int q) { return q < kRimGap ? kForceUnit : kLengthUnit; }
 /// Whether every mode checks q ≥ 0, as it is (the contact and wheel forces, the gaps, the lifts).
 constexpr bool isCheckedAtLeastZero(int q) {
     return (q >= kRimForce && q < kWedgeFriction) || (q >= kRimGap && q < kCompression);
@@ -518,7 +520,8 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
     // Every checked quantity once: the solution's fields and the checks read the same values.
     std::array<double, kCheckedCount> quantity;
     const SolvedValues solved{k, x};
-    // Unrolled, so that each quantity's row is chosen at compile time (a third of the loop's cost).
+    // Unrolled, so that each quantity's row is chosen at compile time (bench/README.md, "The
+    // search's bookkeeping").
 #pragma GCC unroll 18
     for (int q = 0; q < kCheckedCount; ++q) quantity[size_t(q)] = solved(q).value;
     sol.zBolster = x[ZB], sol.rollBolster = x[TB], sol.zWheelset = x[ZW], sol.rollWheelset = x[TW];
@@ -669,7 +672,8 @@ struct TruckModeCache::SpringRows {
     explicit SpringRows(const TruckGeometry& g) {
         const Kinematics k = makeKinematics(g, TruckInputs{});  // the rows do not depend on the inputs
         for (int i : {0, 1})
-            for (int seg = 0; seg < 3; ++seg) row[size_t(i)][size_t(seg)] = makeSpringForce(g, k.compression[i], SpringSegment(seg)).row;
+            for (int seg = 0; seg < 3; ++seg)
+                row[size_t(i)][size_t(seg)] = makeSpringForce(g, k.compression[i], SpringSegment(seg)).row;
     }
 };
 
@@ -711,8 +715,10 @@ TruckModeCache::~TruckModeCache() = default;  // the factorizations are triviall
 namespace {
 const std::array<std::uint16_t, TruckModeCache::kModeCount> kClassIndex = [] {
     std::array<std::uint16_t, TruckModeCache::kModeCount> table{};
-    for (const TruckMode& m : enumerateTruckModes())
-        table[size_t(TruckModeCache::getIndex(m))] = std::uint16_t(TruckModeCache::getIndex(TruckModeCache::getMatrixClass(m)));
+    for (const TruckMode& m : enumerateTruckModes()) {
+        const int classIndex = TruckModeCache::getIndex(TruckModeCache::getMatrixClass(m));
+        table[size_t(TruckModeCache::getIndex(m))] = std::uint16_t(classIndex);
+    }
     return table;
 }();
 }  // namespace
@@ -814,7 +820,7 @@ struct SearchContext {
         const Eigen::Matrix<double, N, 1> b = getRhs(mode);
         const ScreenValues value{checkedConstant, f, b};
         const int hint = cache.getScreenHint(index);
-        if (hint >= 0 && value.isCertainlyViolated(value(hint), Checked{}, hint < kWedgeFriction ? kForceUnit : kLengthUnit))
+        if (hint >= 0 && value.isCertainlyViolated(value(hint), Checked{}, getUnit(hint)))
             return true;
         int failed = -2;  // none
         checkInequalities(g, in, mode, value, [&failed, &value](Checked v, Checked minimum, double unit) {

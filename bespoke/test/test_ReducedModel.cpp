@@ -229,7 +229,8 @@ TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
     const auto modes = enumerateTruckModes();
     for (size_t i = 0; i < modes.size(); ++i) {
         ASSERT_EQ(TruckModeCache::getIndex(modes[i]), int(i));
-        ASSERT_EQ(TruckModeCache::getClassIndex(int(i)), TruckModeCache::getIndex(TruckModeCache::getMatrixClass(modes[i])));
+        const int classIndex = TruckModeCache::getIndex(TruckModeCache::getMatrixClass(modes[i]));
+        ASSERT_EQ(TruckModeCache::getClassIndex(int(i)), classIndex);
     }
     auto direct = [&](const TruckInputs& in, const TruckMode& previous) {  // findTruckEquilibrium's order
         TruckSolution best = solveTruckMode(g, in, previous);
