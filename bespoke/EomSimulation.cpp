@@ -51,7 +51,7 @@ RunResult simulateEom(const EomHalfCarModel& model, const EomRunSettings& settin
         return result.history.samples.append(t, row);
     };
     const long nOut = std::lround(settings.duration * settings.outputRate);
-    result.history.samples.reserve(size_t(std::max(0L, nOut)) + 1, result.history.names.size());
+    result.history.reserveSamples(nOut + 1);
     guard.check(record(0, y0), result);
     for (long k = 1; k <= nOut && !result.stop; ++k) {
         const double tOut = std::min(settings.duration, double(k) / settings.outputRate);

@@ -5,7 +5,6 @@
 #include "mbmodel/CarSide.h"
 #include "mbmodel/Units.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -277,7 +276,7 @@ RunResult simulateReduced(const ReducedHalfCarModel& model, double duration, Red
     const long n = long(std::floor(duration / h + 1e-9));
     const double last = duration - double(n) * h;
     const long total = last > 1e-9 * h ? n + 1 : n;
-    result.history.samples.reserve(size_t(std::max(0L, total)) + 1, result.history.names.size());
+    result.history.reserveSamples(total + 1);
     guard.check(accept(0), result);
     long k = 0;
     for (; k < total && !result.stop; ++k) {

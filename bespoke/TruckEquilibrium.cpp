@@ -1377,8 +1377,8 @@ const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
     std::bitset<TruckModeCache::kModeCount> seen;
     seen.set(size_t(TruckModeCache::getIndex(previous)));
     visitNeighbours(previous, [&](const TruckMode& m) {
-        const size_t index = size_t(TruckModeCache::getIndex(m));
-        if (!seen.test(index)) seen.set(index), list.push_back(PackedMode::pack(m));
+        const PackedMode packed = PackedMode::pack(m);
+        if (!seen.test(packed.index)) seen.set(packed.index), list.push_back(packed);
         return false;
     });
     PackedMode* modes = orders.arena.makeArray<PackedMode>(list.size());

@@ -93,7 +93,7 @@ RunResult simulate(const RockingModel& model, const RunSettings& settings, const
                                 integ->getTime());
     };
     const long nOut = std::lround(settings.duration * settings.outputRate);
-    result.history.samples.reserve(size_t(std::max(0L, nOut)) + 1, result.history.names.size());
+    result.history.reserveSamples(nOut + 1);
     guard.check(record(integ->getState()), result);
 
     for (long k = 1; k <= nOut && !result.stop; ++k) {

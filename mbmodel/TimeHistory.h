@@ -12,6 +12,9 @@ namespace rockroll {
 struct TimeHistory {
     std::vector<std::string> names;            ///< "t_s" then the model's channels
     SampleTable samples;                       ///< one row per output time
+    /// Room for `count` samples of names.size() values (none when count ≤ 0): a simulator
+    /// reserves its whole run before recording.
+    void reserveSamples(long count) { samples.reserve(size_t(count > 0 ? count : 0), names.size()); }
     int column(const std::string& name) const {
         for (size_t i = 0; i < names.size(); ++i)
             if (names[i] == name) return int(i);
