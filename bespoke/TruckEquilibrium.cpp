@@ -1,6 +1,7 @@
 #include "bespoke/TruckEquilibrium.h"
 
 #include "bespoke/FullPivotLu.h"
+#include "bespoke/TruckModeFactor.h"
 
 #include "contacts/SpringGroupLaws.h"
 #include "mbmodel/CarSide.h"
@@ -257,104 +258,8 @@ struct RhsTable {
 
 }  // namespace
 
-// Named, not anonymous: TruckModeCache::Factor (declared in the header) derives from it.
-namespace truck_equilibrium_detail {
-
-/// The scaled, row-equilibrated matrix's factorization: a function of the mode and
-/// the geometry only (the inputs enter b alone), so TruckModeCache keeps one per mode.
-struct ModeFactor {
-    Eigen::Matrix<double, N, N, Eigen::RowMajor> lu;  ///< FullPivLU's L (unit lower) and U, rows contiguous
-    std::array<int, N> p{}, q{};                      ///< its row and column permutations
-    Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
-    bool invertible = false;
-    /// The screen's rows: each checked quantity (CheckedQuantity) is checkRows·b plus
-    /// its Kinematics constant, checkRows = G·A⁻¹ with G the quantities' rows in the
-    /// unknowns. Only for invertible matrices.
-    Eigen::Matrix<double, kCheckedCount, N, Eigen::RowMajor> checkRows;
-
-    /// The nonzero off-diagonal entries of L and of U, row by row (about 40 of L's 105
-    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]).
-    std::array<std::uint8_t, N + 1> lowerStart{}, upperStart{};
-    std::array<std::uint8_t, N * (N - 1) / 2> lowerColumn{}, upperColumn{};
-    std::array<double, N * (N - 1) / 2> lowerValue{}, upperValue{};
-    std::array<double, N> diagonal{};  ///< U's, beside the nonzeros (a solve touches no row of lu)
-
-    void compress() {
-        int nl = 0, nu = 0;
-        for (int i = 0; i < N; ++i) {
-            diagonal[i] = lu(i, i);
-            lowerStart[i] = std::uint8_t(nl), upperStart[i] = std::uint8_t(nu);
-            for (int j = 0; j < i; ++j)
-                if (lu(i, j) != 0) lowerColumn[nl] = std::uint8_t(j), lowerValue[nl++] = lu(i, j);
-            for (int j = i + 1; j < N; ++j)
-                if (lu(i, j) != 0) upperColumn[nu] = std::uint8_t(j), upperValue[nu++] = lu(i, j);
-        }
-        lowerStart[N] = std::uint8_t(nl), upperStart[N] = std::uint8_t(nu);
-    }
-
-    /// FullPivLU::solve's steps (x = Q·U⁻¹·L⁻¹·P·b) by plain substitution: Eigen's
-    /// blocked triangular solves cost ~1 µs at this size, the loops ~0.1 µs. Same
-    /// factors; only the rounding of the sums differs.
-    ///
-    /// Each row's sum runs over the nonzero entries alone, in the dense loop's order.
-    /// Leaving out a term l·c with l = 0 (c finite, so l·c = ±0) cannot change a
-    /// nonzero running sum, nor a +0 one (+0 − ±0 = +0); it changes only a −0 sum that
-    /// the dense loop would turn into +0 (−0 − (−0) = +0). A sum becomes −0 only by
-    /// starting as −0 (an exact cancellation gives +0). So the two sums are equal at
-    /// every step, or both zero and the sparse one −0 where the row started at −0: a row
-    /// that starts at −0 and sums to zero (or to something not finite) is summed again
-    /// by the dense loop, over rows before it that are the dense loop's by induction
-    /// (test ReducedModel.CachedSolveOfEveryModeIsBitIdenticalToTheDirectSolve).
-    ///
-    /// b is the unscaled right-hand side: each row divided by its rowScale on the way in,
-    /// each unknown multiplied by its column scale on the way out (as solveScaled's steps).
-    Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b, const Eigen::Matrix<double, N, 1>& colScale) const {
-        double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
-        for (int i = 1; i < N; ++i) {
-            double v = c[i];
-            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= lowerValue[k] * c[lowerColumn[k]];
-            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
-                v = c[i];
-                for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
-            }
-            c[i] = v;
-        }
-        for (int i = N - 1; i >= 0; --i) {
-            double v = c[i];
-            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= upperValue[k] * c[upperColumn[k]];
-            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
-                v = c[i];
-                for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
-            }
-            c[i] = v / diagonal[i];
-        }
-        Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
-        return x;
-    }
-
-    /// The dense loops: what solve must equal, bit for bit.
-    Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b,
-                                           const Eigen::Matrix<double, N, 1>& colScale) const {
-        double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
-        for (int i = 1; i < N; ++i) {
-            double v = c[i];
-            for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
-            c[i] = v;
-        }
-        for (int i = N - 1; i >= 0; --i) {
-            double v = c[i];
-            for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
-            c[i] = v / lu(i, i);
-        }
-        Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
-        return x;
-    }
-};
-}  // namespace truck_equilibrium_detail
+static_assert(N == truck_equilibrium_detail::kUnknownCount &&
+              kCheckedCount == truck_equilibrium_detail::kCheckedQuantityCount);
 using truck_equilibrium_detail::ModeFactor;
 
 namespace {

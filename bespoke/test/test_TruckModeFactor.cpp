@@ -1,0 +1,82 @@
+#include "bespoke/TruckModeFactor.h"
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+using namespace rockroll;
+using truck_equilibrium_detail::ModeFactor;
+
+namespace {
+using Vector = Eigen::Matrix<double, ModeFactor::N, 1>;
+
+/// A hand-made factorization: unit L and U with a few nonzero entries off the diagonal,
+/// permutations that reverse and rotate, and row scales of 1, 0 and 4.
+ModeFactor makeFactor() {
+    constexpr int n = ModeFactor::N;
+    ModeFactor f;
+    f.lu.setIdentity();
+    f.lu(2, 0) = 0.5, f.lu(3, 2) = -0.25, f.lu(7, 1) = 2, f.lu(14, 9) = -3;  // L
+    f.lu(0, 4) = 0.3, f.lu(5, 11) = -1.5, f.lu(9, 10) = 0.125;                 // U
+    f.lu(4, 4) = -2, f.lu(10, 10) = 8;
+    for (int i = 0; i < n; ++i) f.p[size_t(i)] = n - 1 - i, f.q[size_t(i)] = (i + 3) % n;
+    f.rowScale.setOnes();
+    f.rowScale[6] = 0, f.rowScale[8] = 4;
+    f.invertible = true;
+    f.compress();
+    return f;
+}
+
+void expectSameBits(const Vector& a, const Vector& b, const char* what) {
+    for (int i = 0; i < ModeFactor::N; ++i) {
+        std::uint64_t x, y;
+        std::memcpy(&x, &a[i], 8), std::memcpy(&y, &b[i], 8);
+        EXPECT_EQ(x, y) << what << ": unknown " << i << ", " << a[i] << " / " << b[i];
+    }
+}
+}  // namespace
+
+// The sparse substitution equals the dense one, bit for bit, on finite right-hand sides.
+TEST(TruckModeFactor, SparseSolveEqualsTheDenseOne) {
+    const ModeFactor f = makeFactor();
+    const Vector colScale = Vector::LinSpaced(1e-3, 1e4);
+    std::mt19937 rng(7);
+    std::normal_distribution<double> normal;
+    for (int c = 0; c < 200; ++c) {
+        Vector b;
+        for (int i = 0; i < ModeFactor::N; ++i) b[i] = c % 3 == 0 && i % 2 ? 0.0 : normal(rng);
+        expectSameBits(f.solve(b, colScale), f.solveDense(b, colScale), "random b");
+    }
+}
+
+// A row that starts at −0 and whose nonzero entries add nothing: the dense loop's
+// −0 − 0·(−1) is +0, the sparse sum alone stays −0. solve takes the per-row path when the
+// scaled b holds a −0 (ModeFactor::solve), and gives the dense loop's +0.
+TEST(TruckModeFactor, NegativeZeroInTheRightHandSideGivesTheDenseLoopsZero) {
+    const ModeFactor f = makeFactor();
+    const Vector colScale = Vector::Ones();
+    Vector b = Vector::Zero();
+    b[14] = -1;   // the first row after the permutation (p reverses), which row 13 reads
+    b[13] = -0.0;  // row 1: its only term, lu(1, 0) = 0, is left out by the sparse sum
+    const Vector dense = f.solveDense(b, colScale);
+    expectSameBits(f.solve(b, colScale), dense, "b with −0");
+    expectSameBits(f.solveChecked(b, colScale), dense, "b with −0, per-row tests");
+    EXPECT_FALSE(std::signbit(dense[f.q[1]]));
+}
+
+// A right-hand side that is not finite: solve gives what the per-row tests give (the
+// dense loop's sum for each row that is not finite), not the sparse sums' values.
+TEST(TruckModeFactor, NonFiniteRightHandSideTakesThePerRowPath) {
+    const ModeFactor f = makeFactor();
+    const Vector colScale = Vector::Ones();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (double v : {inf, -inf, std::numeric_limits<double>::quiet_NaN()}) {
+        Vector b = Vector::Ones();
+        b[14] = v, b[13] = v;  // rows 0 and 1 after the permutation: row 1's dense sum is v − 0·v = NaN
+        const Vector x = f.solve(b, colScale);
+        expectSameBits(x, f.solveChecked(b, colScale), "b not finite");
+        EXPECT_TRUE(std::isnan(x[f.q[1]])) << v;
+    }
+}
