@@ -290,10 +290,9 @@ Eigen::Matrix<double, N, N> scaleSystem(const Eigen::Matrix<double, N, N>& A, Ei
 void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
     const FullPivotLu<N> lu(scaleSystem(A, f.rowScale));  // Eigen's FullPivLU, bit for bit
     f.invertible = lu.isInvertible();
-    f.lu = lu.getMatrixLU();
     f.p = lu.getRowPermutation();
     f.q = lu.getColumnPermutation();
-    f.compress();
+    f.compress(lu.getMatrixLU());
 }
 
 /// x from the factorization: b row-scaled, solved, unknowns unscaled.
@@ -537,10 +536,10 @@ Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
     Eigen::Matrix<double, N, N, Eigen::RowMajor> c = Eigen::Matrix<double, N, N, Eigen::RowMajor>::Zero();
     for (int i = 0; i < N; ++i) c(f.p[i], i) = f.rowScale[i] > 0 ? 1 / f.rowScale[i] : 1.0;
     for (int i = 1; i < N; ++i)
-        for (int k = f.lowerStart[i]; k < f.lowerStart[i + 1]; ++k) c.row(i) -= f.lowerValue[k] * c.row(f.lowerColumn[k]);
+        for (int k = f.lowerStart[i]; k < f.lowerStart[i + 1]; ++k) c.row(i) -= f.value[k] * c.row(f.column[k]);
     for (int i = N - 1; i >= 0; --i) {
-        for (int k = f.upperStart[i]; k < f.upperStart[i + 1]; ++k) c.row(i) -= f.upperValue[k] * c.row(f.upperColumn[k]);
-        c.row(i) /= f.lu(i, i);
+        for (int k = f.upperStart[i]; k < f.upperStart[i + 1]; ++k) c.row(i) -= f.value[k] * c.row(f.column[k]);
+        c.row(i) /= f.diagonal[i];
     }
     Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse;
     for (int i = 0; i < N; ++i) inverse.row(f.q[i]) = getColumnScale()[f.q[i]] * c.row(i);

@@ -17,35 +17,66 @@ inline constexpr int kCheckedQuantityCount = 18;
 
 /// The scaled, row-equilibrated matrix's factorization: a function of the mode and
 /// the geometry only (the inputs enter b alone), so TruckModeCache keeps one per mode.
+///
+/// Laid out for the search's memory traffic: what a screen reads first (invertible, then
+/// checkRows), then what a solve reads, then the factors' nonzero entries, of which only
+/// the used part is ever written. L and U themselves are not kept: getLu rebuilds them,
+/// bit for bit (the zeros' signs from a mask), for the rare paths that need every entry.
+/// A run meets about a thousand of these, in fresh memory (bench/README.md, "The search's
+/// memory").
 struct ModeFactor {
     static constexpr int N = kUnknownCount;
-    Eigen::Matrix<double, N, N, Eigen::RowMajor> lu;  ///< FullPivLU's L (unit lower) and U, rows contiguous
-    std::array<int, N> p{}, q{};                      ///< its row and column permutations
-    Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
+    using Lu = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
     bool invertible = false;
     /// The screen's rows: each checked quantity (CheckedQuantity) is checkRows·b plus
     /// its Kinematics constant, checkRows = G·A⁻¹ with G the quantities' rows in the
     /// unknowns. Only for invertible matrices.
     Eigen::Matrix<double, kCheckedQuantityCount, N, Eigen::RowMajor> checkRows;
+    Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
+    std::array<double, N> diagonal;        ///< U's diagonal
+    std::array<int, N> p, q;               ///< FullPivLU's row and column permutations
+    /// The nonzero off-diagonal entries of L, then of U, row by row (about 40 of L's 105
+    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]) of
+    /// column and value.
+    std::array<std::uint8_t, N + 1> lowerStart, upperStart;
+    std::array<std::uint64_t, (N * N + 63) / 64> negativeZero;  ///< bit i·N + j: L or U's entry (i, j) is −0
+    std::array<std::uint8_t, N * (N - 1)> column;
+    std::array<double, N * (N - 1)> value;
 
-    /// The nonzero off-diagonal entries of L and of U, row by row (about 40 of L's 105
-    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]).
-    std::array<std::uint8_t, N + 1> lowerStart{}, upperStart{};
-    std::array<std::uint8_t, N * (N - 1) / 2> lowerColumn{}, upperColumn{};
-    std::array<double, N * (N - 1) / 2> lowerValue{}, upperValue{};
-    std::array<double, N> diagonal{};  ///< U's, beside the nonzeros (a solve touches no row of lu)
-
-    void compress() {
-        int nl = 0, nu = 0;
+    /// Keeps lu's diagonal, its nonzero entries and the places of its −0s.
+    void compress(const Lu& lu) {
+        int n = 0;
+        negativeZero.fill(0);
+        auto keep = [&](int i, int j) {
+            const double v = lu(i, j);
+            if (v != 0) column[size_t(n)] = std::uint8_t(j), value[size_t(n++)] = v;
+            else if (std::signbit(v)) negativeZero[size_t((i * N + j) / 64)] |= std::uint64_t(1) << ((i * N + j) % 64);
+        };
+        for (int i = 0; i < N; ++i) {
+            lowerStart[i] = std::uint8_t(n);
+            for (int j = 0; j < i; ++j) keep(i, j);
+        }
+        lowerStart[N] = std::uint8_t(n);
         for (int i = 0; i < N; ++i) {
             diagonal[i] = lu(i, i);
-            lowerStart[i] = std::uint8_t(nl), upperStart[i] = std::uint8_t(nu);
-            for (int j = 0; j < i; ++j)
-                if (lu(i, j) != 0) lowerColumn[nl] = std::uint8_t(j), lowerValue[nl++] = lu(i, j);
-            for (int j = i + 1; j < N; ++j)
-                if (lu(i, j) != 0) upperColumn[nu] = std::uint8_t(j), upperValue[nu++] = lu(i, j);
+            upperStart[i] = std::uint8_t(n);
+            for (int j = i + 1; j < N; ++j) keep(i, j);
         }
-        lowerStart[N] = std::uint8_t(nl), upperStart[N] = std::uint8_t(nu);
+        upperStart[N] = std::uint8_t(n);
+    }
+
+    /// L (below the diagonal) and U, as compress was given them, bit for bit.
+    Lu getLu() const {
+        Lu lu;
+        for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+                lu(i, j) = (negativeZero[size_t((i * N + j) / 64)] >> ((i * N + j) % 64)) & 1 ? -0.0 : 0.0;
+        for (int i = 0; i < N; ++i) {
+            lu(i, i) = diagonal[i];
+            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) lu(i, column[k]) = value[k];
+            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) lu(i, column[k]) = value[k];
+        }
+        return lu;
     }
 
     /// FullPivLU::solve's steps (x = Q·U⁻¹·L⁻¹·P·b) by plain substitution: Eigen's
@@ -89,13 +120,13 @@ struct ModeFactor {
         if (negativeZero) return solveChecked(b, colScale);
         for (int i = 1; i < N; ++i) {
             double v = c[i];
-            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= lowerValue[k] * c[lowerColumn[k]];
+            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= value[k] * c[column[k]];
             c[i] = v;
         }
         bool finite = true;
         for (int i = N - 1; i >= 0; --i) {
             double v = c[i];
-            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= upperValue[k] * c[upperColumn[k]];
+            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= value[k] * c[column[k]];
             c[i] = v / diagonal[i];
             finite &= std::isfinite(c[i]);
         }
@@ -108,11 +139,12 @@ struct ModeFactor {
     /// solve with each row's test, for a b holding a −0 or a solution that is not finite.
     Eigen::Matrix<double, N, 1> solveChecked(const Eigen::Matrix<double, N, 1>& b,
                                              const Eigen::Matrix<double, N, 1>& colScale) const {
+        const Lu lu = getLu();
         double c[N];
         for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
         for (int i = 1; i < N; ++i) {
             double v = c[i];
-            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= lowerValue[k] * c[lowerColumn[k]];
+            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= value[k] * c[column[k]];
             if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
                 v = c[i];
                 for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
@@ -121,7 +153,7 @@ struct ModeFactor {
         }
         for (int i = N - 1; i >= 0; --i) {
             double v = c[i];
-            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= upperValue[k] * c[upperColumn[k]];
+            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= value[k] * c[column[k]];
             if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
                 v = c[i];
                 for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
@@ -136,6 +168,7 @@ struct ModeFactor {
     /// The dense loops: what solve must equal, bit for bit.
     Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b,
                                            const Eigen::Matrix<double, N, 1>& colScale) const {
+        const Lu lu = getLu();
         double c[N];
         for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
         for (int i = 1; i < N; ++i) {

@@ -17,15 +17,15 @@ using Vector = Eigen::Matrix<double, ModeFactor::N, 1>;
 ModeFactor makeFactor() {
     constexpr int n = ModeFactor::N;
     ModeFactor f;
-    f.lu.setIdentity();
-    f.lu(2, 0) = 0.5, f.lu(3, 2) = -0.25, f.lu(7, 1) = 2, f.lu(14, 9) = -3;  // L
-    f.lu(0, 4) = 0.3, f.lu(5, 11) = -1.5, f.lu(9, 10) = 0.125;                 // U
-    f.lu(4, 4) = -2, f.lu(10, 10) = 8;
+    ModeFactor::Lu lu = ModeFactor::Lu::Identity();
+    lu(2, 0) = 0.5, lu(3, 2) = -0.25, lu(7, 1) = 2, lu(14, 9) = -3, lu(6, 5) = -0.0;  // L
+    lu(0, 4) = 0.3, lu(5, 11) = -1.5, lu(9, 10) = 0.125, lu(1, 13) = -0.0;            // U
+    lu(4, 4) = -2, lu(10, 10) = 8;
     for (int i = 0; i < n; ++i) f.p[size_t(i)] = n - 1 - i, f.q[size_t(i)] = (i + 3) % n;
     f.rowScale.setOnes();
     f.rowScale[6] = 0, f.rowScale[8] = 4;
     f.invertible = true;
-    f.compress();
+    f.compress(lu);
     return f;
 }
 
@@ -37,6 +37,28 @@ void expectSameBits(const Vector& a, const Vector& b, const char* what) {
     }
 }
 }  // namespace
+
+// The factors are kept as their nonzero entries and the places of their −0s: getLu
+// gives back what compress was given, bit for bit.
+TEST(TruckModeFactor, KeepsTheFactorsBitForBit) {
+    ModeFactor::Lu lu;
+    std::mt19937 rng(3);
+    std::uniform_int_distribution<int> kind(0, 3);
+    std::normal_distribution<double> normal;
+    for (int i = 0; i < ModeFactor::N; ++i)
+        for (int j = 0; j < ModeFactor::N; ++j) {
+            const int k = kind(rng);
+            lu(i, j) = k == 0 ? 0.0 : k == 1 ? -0.0 : normal(rng);
+        }
+    ModeFactor f;
+    f.compress(lu);
+    const ModeFactor::Lu back = f.getLu();
+    EXPECT_EQ(std::memcmp(back.data(), lu.data(), sizeof(double) * ModeFactor::N * ModeFactor::N), 0);
+    int kept = 0;
+    for (int i = 0; i < ModeFactor::N; ++i)
+        for (int j = 0; j < ModeFactor::N; ++j) kept += i != j && lu(i, j) != 0 ? 1 : 0;
+    EXPECT_EQ(int(f.upperStart[ModeFactor::N]), kept);
+}
 
 // The sparse substitution equals the dense one, bit for bit, on finite right-hand sides.
 TEST(TruckModeFactor, SparseSolveEqualsTheDenseOne) {
