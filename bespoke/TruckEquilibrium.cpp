@@ -318,8 +318,8 @@ struct Checked {
 /// whose violation is (minimum − value)/unit (forces in units of 10 kN, lengths in
 /// units of 0.1 mm), on the quantities v(f) gives (SolvedValues: from the mode's
 /// solution x). need returns false to stop early. The one definition of the checks:
-/// solveFactored takes the largest violation, isConsistent stops at the first one above
-/// kConsistentViolation, the screen at the first one certainly above it. The forces
+/// solveFactored takes the largest violation (the mode is consistent when it is at most
+/// kConsistentViolation), the screen stops at the first one certainly above it. The forces
 /// come first: they are unknowns themselves, and most modes that fail fail on one.
 template <class Values, class Need>
 void checkInequalities(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, Values&& v, Need&& need) {
@@ -454,19 +454,6 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
     return sol;
 }
 
-/// solveFactored(...).consistent, without building the solution, stopping at the first
-/// violation above kConsistentViolation (the same checks on the same x: the same answer).
-bool isConsistentFactored(const TruckGeometry& g, const TruckInputs& in, const TruckMode& mode, const Kinematics& k,
-                          const ModeFactor& f, const Eigen::Matrix<double, N, 1>& b) {
-    if (!f.invertible) return false;
-    const Eigen::Matrix<double, N, 1> x = solveScaled(f, b);
-    bool consistent = true;
-    checkInequalities(g, in, mode, SolvedValues{k, x}, [&consistent](Checked value, Checked minimum, double unit) {
-        if ((minimum.value - value.value) / unit > kConsistentViolation) consistent = false;  // NaN: no violation
-        return consistent;
-    });
-    return consistent;
-}
 
 }  // namespace
 
@@ -712,8 +699,8 @@ struct SearchContext {
     TruckSolution solve(const TruckMode& mode) const { return solve(mode, TruckModeCache::getIndex(mode)); }
     /// Whether the mode's checks fail beyond doubt: a violation above
     /// kConsistentViolation by more than the screen's error bound on the quantities,
-    /// each computed as checkRows·b + c instead of from the solution. Then isConsistent
-    /// is false too; otherwise nothing is concluded.
+    /// each computed as checkRows·b + c instead of from the solution. Then the solve
+    /// finds the mode inconsistent too; otherwise nothing is concluded.
     ///
     /// The answer is whether any check fails so, in whatever order they are tried: the
     /// screen first tries the check "q ≥ 0" that last failed for this mode
@@ -735,9 +722,6 @@ struct SearchContext {
         if (failed == -2) return false;
         if (failed != hint) cache.setScreenHint(index, failed);
         return true;
-    }
-    bool isConsistent(const TruckMode& mode, int index) const {
-        return isConsistentFactored(g, in, mode, k, cache.getFactor(index, mode, in), getRhs(mode));
     }
 };
 
@@ -1325,8 +1309,9 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
             return false;
         }
         ++n.solves;
-        if (!context.isConsistent(m, index)) return false;
-        found = context.solve(m, index);
+        TruckSolution solved = context.solve(m, index);
+        if (!solved.consistent) return false;
+        found = solved;
         return true;
     };
     const ModeOrder& neighbours = getNeighbourOrder(previous);
