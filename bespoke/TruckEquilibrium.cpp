@@ -571,7 +571,7 @@ struct TruckModeCache::SpringRows {
 TruckModeCache::TruckModeCache(const TruckGeometry& g)
     : geometry_(g),
       arena_(std::make_unique<HugePageArena>()),
-      slots_(arena_->makeArray<std::atomic<Factor*>>(kModeCount)),
+      slots_(arena_->makeArray<std::atomic<Factor*>>(kClassCount)),
       screenHints_(arena_->makeArray<std::atomic<std::int8_t>>(kModeCount)),
       springRows_(arena_->make<SpringRows>(g)) {}
 
@@ -603,22 +603,10 @@ std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeome
 
 TruckModeCache::~TruckModeCache() = default;  // the factorizations are trivially destructible, in arena_
 
-namespace {
-const std::array<std::uint16_t, TruckModeCache::kModeCount> kClassIndex = [] {
-    std::array<std::uint16_t, TruckModeCache::kModeCount> table{};
-    for (const TruckMode& m : enumerateTruckModes()) {
-        const int classIndex = TruckModeCache::getIndex(TruckModeCache::getMatrixClass(m));
-        table[size_t(TruckModeCache::getIndex(m))] = std::uint16_t(classIndex);
-    }
-    return table;
-}();
-}  // namespace
-
-int TruckModeCache::getClassIndex(int modeIndex) { return kClassIndex[size_t(modeIndex)]; }
 
 const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const TruckMode& mode,
                                                         const TruckInputs& in) const {
-    std::atomic<Factor*>& slot = slots_[kClassIndex[size_t(modeIndex)]];
+    std::atomic<Factor*>& slot = slots_[getClassIndex(modeIndex)];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
     Factor& made = *arena_->make<Factor>();  // a thread that loses the race below leaves its copy unused

@@ -46,6 +46,7 @@
 #include "mbmodel/CarParameters.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -173,8 +174,23 @@ public:
         if (c.gib == GibContact::Negative) c.gib = GibContact::Positive;
         return c;
     }
-    /// getIndex(getMatrixClass(m)) from getIndex(m), by a table.
-    static int getClassIndex(int modeIndex);
+    /// The number of matrix classes: the modes whose wedges stick or slip up, lateral
+    /// wedges likewise, gibs open or at +.
+    static constexpr int kClassCount = 8 * 3 * 9 * 2 * 2 * 2 * 2;
+    /// The index 0 … kClassCount − 1 of getMatrixClass(m) from getIndex(m): modes share it
+    /// exactly when they share their matrix class. The index's last two base-9 digits hold
+    /// the wedges and the lateral wedge and gib, one bit of class each.
+    static int getClassIndex(int modeIndex) {
+        static constexpr auto kLastDigits = [] {
+            std::array<std::uint8_t, 81> t{};  // [3·w0 + w1][3·lateral + gib], base 9
+            for (int f = 0; f < 9; ++f)
+                for (int lat = 0; lat < 9; ++lat)
+                    t[size_t(9 * f + lat)] = std::uint8_t(8 * std::min(f / 3, 1) + 4 * std::min(f % 3, 1) +
+                                                          2 * std::min(lat / 3, 1) + std::min(lat % 3, 1));
+            return t;
+        }();
+        return modeIndex / 81 * 16 + kLastDigits[size_t(modeIndex % 81)];
+    }
     struct Factor;
     const Factor& getFactor(const TruckMode& mode, const TruckInputs& anyInputs) const {
         return getFactor(getIndex(mode), mode, anyInputs);
@@ -201,7 +217,7 @@ private:
     /// factorizations of one run cost a page fault each on first touch, more than the
     /// factoring itself on a virtual machine (bench/README.md, "Bespoke models").
     std::unique_ptr<HugePageArena> arena_;
-    std::atomic<Factor*>* slots_;  ///< kModeCount, in arena_; null until factored
+    std::atomic<Factor*>* slots_;  ///< kClassCount, by getClassIndex, in arena_; null until factored
     std::atomic<std::int8_t>* screenHints_;  ///< kModeCount, in arena_: the hint + 1 (0: none)
     const SpringRows* springRows_;  ///< in arena_
 };

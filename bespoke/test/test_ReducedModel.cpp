@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <random>
 #include <set>
 
@@ -227,11 +228,21 @@ TEST(ReducedModel, CachedModeSearchIsBitIdenticalToTheDirectSolve) {
     const ReducedHalfCarModel m = makeLevelModel();
     const TruckGeometry& g = m.getTruckGeometry();
     const auto modes = enumerateTruckModes();
+    std::map<int, int> classOf;  // getIndex(getMatrixClass(m)) -> getClassIndex
+    std::set<int> classIndices;
     for (size_t i = 0; i < modes.size(); ++i) {
         ASSERT_EQ(TruckModeCache::getIndex(modes[i]), int(i));
-        const int classIndex = TruckModeCache::getIndex(TruckModeCache::getMatrixClass(modes[i]));
-        ASSERT_EQ(TruckModeCache::getClassIndex(int(i)), classIndex);
+        const int matrixClass = TruckModeCache::getIndex(TruckModeCache::getMatrixClass(modes[i]));
+        const int classIndex = TruckModeCache::getClassIndex(int(i));
+        ASSERT_GE(classIndex, 0);
+        ASSERT_LT(classIndex, TruckModeCache::kClassCount);
+        const auto [at, inserted] = classOf.emplace(matrixClass, classIndex);
+        ASSERT_EQ(at->second, classIndex) << modes[i].describe();  // one index per class
+        if (inserted) {
+            ASSERT_TRUE(classIndices.insert(classIndex).second) << modes[i].describe();  // one class per index
+        }
     }
+    EXPECT_EQ(int(classIndices.size()), TruckModeCache::kClassCount);
     auto direct = [&](const TruckInputs& in, const TruckMode& previous) {  // findTruckEquilibrium's order
         TruckSolution best = solveTruckMode(g, in, previous);
         if (best.consistent) return best;
