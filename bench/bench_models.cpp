@@ -3,6 +3,7 @@
 // with the max roll each gives, and the ratios taken in the same run.
 //
 //   build/bin/rockroll_bench [--sim-seconds=T] [google-benchmark flags]
+#include "mbmodel/HugePageMemory.h"
 #include "mbmodel/RockingModel.h"
 #include "scenarios/ModelRegistry.h"
 #include "scenarios/ScenarioRun.h"
@@ -19,6 +20,9 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <map>
+#include <random>
+#include <algorithm>
+#include <vector>
 #include <sys/resource.h>
 
 using namespace rockroll;
@@ -237,11 +241,63 @@ void realizeCost(benchmark::State& state, const std::string& model, bool withFor
     state.counters["us_per_realization"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
+// The machine's state beside the figures (bench/README.md, "The search's memory"): a chain of
+// 20 million dependent multiply-adds in registers (the core's speed), a pointer chase over
+// 4 MB (the shared cache's latency, which other tenants of the machine can triple), and the
+// first touch of four fresh 2 MB huge-page blocks (mbmodel/HugePageMemory.h), as a run's
+// caches and history take them.
+double gRegisterChainMs = 0, gChaseNs = 0, gHugePageUs = 0;
+void hugePageTouch(benchmark::State& state) {
+    constexpr int kBlocks = 4;
+    double seconds = 0;
+    for (auto _ : state) {
+        char* p = static_cast<char*>(allocateLargeBuffer(kBlocks * kHugePageBytes));
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int i = 0; i < kBlocks; ++i) p[std::size_t(i) * kHugePageBytes] = 1;
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        benchmark::DoNotOptimize(p[0]);
+        std::free(p);
+    }
+    gHugePageUs = 1e6 * seconds / double(kBlocks * state.iterations());
+    state.counters["us_per_block"] = gHugePageUs;
+}
+void registerChain(benchmark::State& state) {
+    double a = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (auto _ : state) {
+        for (long i = 0; i < 20000000; ++i) a = a * 1.0000001 + 1e-9;
+        benchmark::DoNotOptimize(a);
+    }
+    gRegisterChainMs = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+                       double(state.iterations());
+    state.counters["ms"] = gRegisterChainMs;
+}
+void cacheChase(benchmark::State& state) {
+    const std::size_t n = (std::size_t(4) << 20) / sizeof(std::uint32_t);
+    std::vector<std::uint32_t> order(n), next(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = std::uint32_t(i);
+    std::shuffle(order.begin(), order.end(), std::mt19937(1));
+    for (std::size_t i = 0; i < n; ++i) next[order[i]] = order[(i + 1) % n];  // one cycle through all
+    std::uint32_t p = 0;
+    for (std::size_t i = 0; i < n; ++i) p = next[p];  // in the caches it fits
+    const long steps = 4000000;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (auto _ : state) {
+        for (long i = 0; i < steps; ++i) p = next[p];
+        benchmark::DoNotOptimize(p);
+    }
+    gChaseNs = 1e9 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+               double(steps * state.iterations());
+    state.counters["ns_per_step"] = gChaseNs;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i)
         if (std::strncmp(argv[i], "--sim-seconds=", 14) == 0) gSimSeconds = std::atof(argv[i] + 14);
+    benchmark::RegisterBenchmark("machine/register_chain", registerChain)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("machine/cache_chase_4MB", cacheChase)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("machine/huge_page_touch", hugePageTouch)->Iterations(1)->Unit(benchmark::kMillisecond);
     // The hand-written models on the same case: eom (CVODE BDF) and the reduced model (RK4, 5 ms).
     const ModelRegistry& registry = ModelRegistry::get();
     std::vector<std::string> ownIntegrator;
@@ -357,6 +413,10 @@ int main(int argc, char** argv) {
                    "{}, {}; fresh / chord {:.2f}x; roll amplitudes differ by at most {:.2g}\n",
                    f.cpuS, f.maps, f.amplitudes.size(), c.cpuS, c.maps, c.amplitudes.size(), f.cpuS / c.cpuS, diff);
     }
+    if (gRegisterChainMs > 0 || gChaseNs > 0 || gHugePageUs > 0)
+        fmt::print("\nmachine state (same run): register chain {:.1f} ms, 4 MB pointer chase {:.1f} ns a step, "
+                   "first touch of a 2 MB huge-page block {:.0f} µs\n",
+                   gRegisterChainMs, gChaseNs, gHugePageUs);
     fmt::print("\nratios (same run):\n");
     ratio("halfcar cpodes 0.0001", "fullcar cpodes 0.0001");
     ratio("halfcar cpodes 0.0001", "halfcar rkmerson 0.0001");
