@@ -79,6 +79,17 @@ struct ModeFactor {
         return lu;
     }
 
+    /// c = P·b with each row divided by its rowScale: what the substitutions start from.
+    void loadRightHandSide(const Eigen::Matrix<double, N, 1>& b, double* c) const {
+        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
+    }
+    /// x = Q·c with each unknown multiplied by its column scale.
+    Eigen::Matrix<double, N, 1> unloadSolution(const double* c, const Eigen::Matrix<double, N, 1>& colScale) const {
+        Eigen::Matrix<double, N, 1> x;
+        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
+        return x;
+    }
+
     /// FullPivLU::solve's steps (x = Q·U⁻¹·L⁻¹·P·b) by plain substitution: Eigen's
     /// blocked triangular solves cost ~1 µs at this size, the loops ~0.1 µs. Same
     /// factors; only the rounding of the sums differs.
@@ -111,12 +122,9 @@ struct ModeFactor {
     Eigen::Matrix<double, N, 1> solve(const Eigen::Matrix<double, N, 1>& b,
                                       const Eigen::Matrix<double, N, 1>& colScale) const {
         double c[N];
+        loadRightHandSide(b, c);
         bool negativeZero = false;
-        for (int i = 0; i < N; ++i) {
-            const double v = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
-            negativeZero |= v == 0 && std::signbit(v);
-            c[p[i]] = v;
-        }
+        for (int i = 0; i < N; ++i) negativeZero |= c[i] == 0 && std::signbit(c[i]);
         if (negativeZero) return solveChecked(b, colScale);
         for (int i = 1; i < N; ++i) {
             double v = c[i];
@@ -131,59 +139,43 @@ struct ModeFactor {
             finite &= std::isfinite(c[i]);
         }
         if (!finite) return solveChecked(b, colScale);
-        Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
-        return x;
+        return unloadSolution(c, colScale);
     }
 
     /// solve with each row's test, for a b holding a −0 or a solution that is not finite.
     Eigen::Matrix<double, N, 1> solveChecked(const Eigen::Matrix<double, N, 1>& b,
                                              const Eigen::Matrix<double, N, 1>& colScale) const {
-        const Lu lu = getLu();
-        double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
-        for (int i = 1; i < N; ++i) {
-            double v = c[i];
-            for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= value[k] * c[column[k]];
-            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
-                v = c[i];
-                for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
-            }
-            c[i] = v;
-        }
-        for (int i = N - 1; i >= 0; --i) {
-            double v = c[i];
-            for (int k = upperStart[i]; k < upperStart[i + 1]; ++k) v -= value[k] * c[column[k]];
-            if ((v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
-                v = c[i];
-                for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
-            }
-            c[i] = v / diagonal[i];
-        }
-        Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
-        return x;
+        return substituteRowByRow(b, colScale, false);
     }
 
     /// The dense loops: what solve must equal, bit for bit.
     Eigen::Matrix<double, N, 1> solveDense(const Eigen::Matrix<double, N, 1>& b,
                                            const Eigen::Matrix<double, N, 1>& colScale) const {
+        return substituteRowByRow(b, colScale, true);
+    }
+
+private:
+    /// Each row's sum over its nonzero entries, summed again over every entry of the row
+    /// where it started at −0 and came to zero or is not finite; with dense, every row over
+    /// every entry.
+    Eigen::Matrix<double, N, 1> substituteRowByRow(const Eigen::Matrix<double, N, 1>& b,
+                                                   const Eigen::Matrix<double, N, 1>& colScale, bool dense) const {
         const Lu lu = getLu();
         double c[N];
-        for (int i = 0; i < N; ++i) c[p[i]] = rowScale[i] > 0 ? b[i] / rowScale[i] : b[i];
-        for (int i = 1; i < N; ++i) {
+        loadRightHandSide(b, c);
+        auto sum = [&](int i, int firstColumn, int endColumn, int firstEntry, int endEntry) {
             double v = c[i];
-            for (int j = 0; j < i; ++j) v -= lu(i, j) * c[j];
-            c[i] = v;
-        }
-        for (int i = N - 1; i >= 0; --i) {
-            double v = c[i];
-            for (int j = i + 1; j < N; ++j) v -= lu(i, j) * c[j];
-            c[i] = v / lu(i, i);
-        }
-        Eigen::Matrix<double, N, 1> x;
-        for (int i = 0; i < N; ++i) x[q[i]] = colScale[q[i]] * c[i];
-        return x;
+            if (!dense)
+                for (int k = firstEntry; k < endEntry; ++k) v -= value[k] * c[column[k]];
+            if (dense || (v == 0 && std::signbit(c[i])) || !std::isfinite(v)) {
+                v = c[i];
+                for (int j = firstColumn; j < endColumn; ++j) v -= lu(i, j) * c[j];
+            }
+            return v;
+        };
+        for (int i = 1; i < N; ++i) c[i] = sum(i, 0, i, lowerStart[i], lowerStart[i + 1]);
+        for (int i = N - 1; i >= 0; --i) c[i] = sum(i, i + 1, N, upperStart[i], upperStart[i + 1]) / diagonal[i];
+        return unloadSolution(c, colScale);
     }
 };
 }  // namespace truck_equilibrium_detail
