@@ -18,12 +18,13 @@
 #include <chrono>
 #include <ctime>
 #include <cstring>
+#include <algorithm>
 #include <fmt/format.h>
 #include <map>
 #include <random>
-#include <algorithm>
-#include <vector>
 #include <sys/resource.h>
+#include <utility>
+#include <vector>
 
 using namespace rockroll;
 
@@ -295,9 +296,11 @@ void cacheChase(benchmark::State& state) {
 int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i)
         if (std::strncmp(argv[i], "--sim-seconds=", 14) == 0) gSimSeconds = std::atof(argv[i] + 14);
-    benchmark::RegisterBenchmark("machine/register_chain", registerChain)->Iterations(1)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("machine/cache_chase_4MB", cacheChase)->Iterations(1)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("machine/huge_page_touch", hugePageTouch)->Iterations(1)->Unit(benchmark::kMillisecond);
+    using Probe = std::pair<const char*, void (*)(benchmark::State&)>;
+    for (const auto& [name, probe] : {Probe{"machine/register_chain", registerChain},
+                                      Probe{"machine/cache_chase_4MB", cacheChase},
+                                      Probe{"machine/huge_page_touch", hugePageTouch}})
+        benchmark::RegisterBenchmark(name, probe)->Iterations(1)->Unit(benchmark::kMillisecond);
     // The hand-written models on the same case: eom (CVODE BDF) and the reduced model (RK4, 5 ms).
     const ModelRegistry& registry = ModelRegistry::get();
     std::vector<std::string> ownIntegrator;

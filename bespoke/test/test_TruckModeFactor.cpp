@@ -80,8 +80,8 @@ TEST(TruckModeFactor, NegativeZeroInTheRightHandSideGivesTheDenseLoopsZero) {
     const ModeFactor f = makeFactor();
     const Vector colScale = Vector::Ones();
     Vector b = Vector::Zero();
-    b[14] = -1;   // the first row after the permutation (p reverses), which row 13 reads
-    b[13] = -0.0;  // row 1: its only term, lu(1, 0) = 0, is left out by the sparse sum
+    b[14] = -1;    // c[0] (p reverses the rows)
+    b[13] = -0.0;  // c[1]: row 1's only term below the diagonal, lu(1, 0) = 0, the sparse sum leaves out
     const Vector dense = f.solveDense(b, colScale);
     expectSameBits(f.solve(b, colScale), dense, "b with −0");
     expectSameBits(f.solveChecked(b, colScale), dense, "b with −0, per-row tests");
