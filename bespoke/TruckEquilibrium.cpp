@@ -613,16 +613,18 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const Tru
     factorSystem(assembleMatrix(geometry_, in, mode, k), made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
-        made.checkRows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
+        Eigen::Matrix<double, kCheckedCount, N, Eigen::RowMajor> rows;
+        rows.setZero();  // G·A⁻¹ over G's nonzeros (one to four per row)
         for (int q = 0; q < kCheckedCount; ++q) {
             if (q < kRimGap) {
-                made.checkRows.row(q) = inverse.row(getCheckedUnknown(q));
+                rows.row(q) = inverse.row(getCheckedUnknown(q));
                 continue;
             }
             const Row& g = getCheckedKinematics(k, q).row;
             for (int j = 0; j < N; ++j)
-                if (g[j] != 0) made.checkRows.row(q) += g[j] * inverse.row(j);
+                if (g[j] != 0) rows.row(q) += g[j] * inverse.row(j);
         }
+        made.setCheckRows(rows);
     }
     Factor* expected = nullptr;
     if (slot.compare_exchange_strong(expected, &made, std::memory_order_acq_rel)) return made;
@@ -630,17 +632,26 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const Tru
 }
 
 namespace {
-/// The checked quantities from the right-hand side b alone: checkRows·b plus the
-/// quantity's Kinematics constant c, with the error bound
-/// kScreenRelativeError·(|checkRows|·|b| + |c|) plus kScreenForceFloor (forces) or
-/// kScreenLengthFloor (lengths).
+/// The checked quantities from the right-hand side b alone: h·b plus the quantity's
+/// Kinematics constant c, h its row of checkRows (single precision), with the error bound
+/// (kScreenRelativeError + kScreenRowRounding)·|h|·|b| + kScreenRelativeError·|c| plus
+/// kScreenForceFloor (forces) or kScreenLengthFloor (lengths).
 struct ScreenValues {
     const std::array<double, kCheckedCount>& constant;  ///< each quantity's Kinematics constant (0 for forces)
     const TruckModeCache::Factor& f;
-    const Eigen::Matrix<double, N, 1>& b;
-    Checked operator()(int q) const { return Checked{f.checkRows.row(q).dot(b) + constant[size_t(q)], q}; }
+    double b[16];  ///< the right-hand side, padded with a 0 (ModeFactor::ScreenRow)
+    ScreenValues(const std::array<double, kCheckedCount>& c, const TruckModeCache::Factor& factor,
+                 const Eigen::Matrix<double, N, 1>& rhs)
+        : constant(c), f(factor) {
+        for (int j = 0; j < N; ++j) b[j] = rhs[j];
+        b[N] = 0;
+    }
+    Checked operator()(int q) const { return Checked{f.checkRows[size_t(q)].dot(b) + constant[size_t(q)], q}; }
+    /// The part of calcError(q) that covers the rows' single-precision rounding.
+    double calcRowRounding(int q) const { return kScreenRowRounding * f.checkRows[size_t(q)].dotAbs(b); }
     double calcError(int q) const {
-        return kScreenRelativeError * (f.checkRows.row(q).cwiseAbs().dot(b.cwiseAbs()) + std::abs(constant[size_t(q)])) +
+        return (kScreenRelativeError + kScreenRowRounding) * f.checkRows[size_t(q)].dotAbs(b) +
+               kScreenRelativeError * std::abs(constant[size_t(q)]) +
                (q < kRimGap ? kScreenForceFloor : kScreenLengthFloor);
     }
     double getError(const Checked& v) const { return (v.errorOf >= 0 ? calcError(v.errorOf) : 0.0) + v.errorAdded; }
@@ -1170,6 +1181,7 @@ TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckM
         const Checked s = screened(q);
         out.screened.push_back(s.value);
         out.screenError.push_back(screened.getError(s));
+        out.screenRowRounding.push_back(screened.calcRowRounding(q));
     }
     return out;
 }

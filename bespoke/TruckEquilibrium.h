@@ -228,9 +228,10 @@ TruckSolution solveTruckMode(const TruckInputs& in, const TruckMode& mode, const
 /// The quantities a mode's consistency checks read (rim, side-bearing and wheel forces,
 /// wedge frictions, lateral friction, rim and pad gaps, tread lifts, compressions, lateral
 /// deflection: 18), from the mode's solution and from the search's screen, with the
-/// screen's error bound. Empty when the mode's matrix is singular.
+/// screen's error bound and the part of it that covers the screen's single-precision
+/// rows (kScreenRowRounding). Empty when the mode's matrix is singular.
 struct TruckCheckedQuantities {
-    std::vector<double> solved, screened, screenError;
+    std::vector<double> solved, screened, screenError, screenRowRounding;
 };
 TruckCheckedQuantities calcCheckedQuantities(const TruckInputs& in, const TruckMode& mode, const TruckModeCache& cache);
 
@@ -299,6 +300,13 @@ enum class TruckSearchPruning { Screened, ChoiceBounds, Exhaustive };
 /// the screen leaves to the solve only modes within 1e-8 of consistency. The bound must
 /// cover the screen's rounding and the solve's (test ReducedModel.ScreenErrorBoundCoversTheSolve).
 inline constexpr double kScreenRelativeError = 1e-10, kScreenForceFloor = 1e-4, kScreenLengthFloor = 1e-12;
+/// The screen keeps h in single precision, rounded to nearest: each entry h̃ is within
+/// 2⁻²⁴·|h| ≤ 2⁻²⁴/(1 − 2⁻²⁴)·|h̃| < kScreenRowRounding·|h̃| of h, so h̃·b is within
+/// kScreenRowRounding·(|h̃|·|b|) of h·b, a bound the screen adds to the one above. (An
+/// entry below single precision's normal range, |h| < 1.2e-38, is off by at most 1e-45,
+/// far below the floors; one above its range becomes infinite, and a check on an
+/// infinite or NaN value is never found violated.)
+inline constexpr double kScreenRowRounding = 6e-8;
 
 /// The mode search: the previous mode, then its neighbours, then every mode;
 /// the first consistent one, or (none consistent) the one with the smallest violation.

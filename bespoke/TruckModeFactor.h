@@ -6,6 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace rockroll {
 // Named, not anonymous: TruckModeCache::Factor (declared in TruckEquilibrium.h) derives from it.
@@ -28,10 +31,54 @@ struct ModeFactor {
     static constexpr int N = kUnknownCount;
     using Lu = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
     bool invertible = false;
-    /// The screen's rows: each checked quantity (CheckedQuantity) is checkRows·b plus
-    /// its Kinematics constant, checkRows = G·A⁻¹ with G the quantities' rows in the
-    /// unknowns. Only for invertible matrices.
-    Eigen::Matrix<double, kCheckedQuantityCount, N, Eigen::RowMajor> checkRows;
+    /// One row of the screen's, h, in single precision (rounded to nearest; the screen's
+    /// error bound covers the rounding: kScreenRowRounding in TruckEquilibrium.h), on one
+    /// 64-byte line: N entries and a 0.
+    static_assert(N < 16, "a screen row holds N entries and a 0 in 16 floats");
+    struct alignas(64) ScreenRow {
+        std::array<float, 16> h;
+        /// h·b, b padded to 16 entries with a 0 (in four partial sums: any order's
+        /// rounding is within the screen's kScreenRelativeError).
+        double dot(const double* b16) const { return sum<false>(b16); }
+        /// |h|·|b|, as dot.
+        double dotAbs(const double* b16) const { return sum<true>(b16); }
+
+    private:
+        template <bool Abs>
+        double sum(const double* b16) const {
+#ifdef __SSE2__
+            __m128d a0 = _mm_setzero_pd(), a1 = _mm_setzero_pd();
+            const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+            for (int j = 0; j < 16; j += 4) {
+                const __m128 h4 = _mm_load_ps(h.data() + j);
+                __m128d p0 = _mm_mul_pd(_mm_cvtps_pd(h4), _mm_loadu_pd(b16 + j));
+                __m128d p1 = _mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(h4, h4)), _mm_loadu_pd(b16 + j + 2));
+                if constexpr (Abs) p0 = _mm_and_pd(p0, noSign), p1 = _mm_and_pd(p1, noSign);
+                a0 = _mm_add_pd(a0, p0), a1 = _mm_add_pd(a1, p1);
+            }
+            const __m128d a = _mm_add_pd(a0, a1);
+            return _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a)));
+#else
+            double s[4] = {};
+            for (int j = 0; j < 16; ++j) {
+                const double p = double(h[size_t(j)]) * b16[j];
+                s[j % 4] += Abs ? std::abs(p) : p;
+            }
+            return (s[0] + s[2]) + (s[1] + s[3]);
+#endif
+        }
+    };
+    /// The screen's rows: each checked quantity (CheckedQuantity) is h·b plus its
+    /// Kinematics constant, h its row of G·A⁻¹ with G the quantities' rows in the unknowns.
+    /// Only for invertible matrices. In single precision: half the memory a screen reads.
+    std::array<ScreenRow, kCheckedQuantityCount> checkRows;
+    /// Keeps the rows of `rows` (G·A⁻¹ in double precision) as checkRows.
+    void setCheckRows(const Eigen::Matrix<double, kCheckedQuantityCount, N, Eigen::RowMajor>& rows) {
+        for (int q = 0; q < kCheckedQuantityCount; ++q) {
+            for (int j = 0; j < N; ++j) checkRows[size_t(q)].h[size_t(j)] = float(rows(q, j));
+            checkRows[size_t(q)].h[N] = 0;
+        }
+    }
     Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
     std::array<double, N> diagonal;        ///< U's diagonal
     std::array<int, N> p, q;               ///< FullPivLU's row and column permutations

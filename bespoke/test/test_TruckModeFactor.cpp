@@ -1,7 +1,10 @@
 #include "bespoke/TruckModeFactor.h"
+#include "bespoke/TruckEquilibrium.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -101,4 +104,50 @@ TEST(TruckModeFactor, NonFiniteRightHandSideTakesThePerRowPath) {
         expectSameBits(x, f.solveChecked(b, colScale), "b not finite");
         EXPECT_TRUE(std::isnan(x[f.q[1]])) << v;
     }
+}
+
+// The screen's single-precision rows: h·b and |h|·|b| equal long-double sums over the
+// kept entries to within the double rounding the screen allows for (kScreenRelativeError
+// of |h|·|b|), the padding entry is 0, and the rows' rounding from double precision is
+// within kScreenRowRounding·|h̃|·|b| of the double rows' h·b: at scales from 1e-30 to 1e30,
+// with zeros and both signs.
+TEST(TruckModeFactor, ScreenRowsRoundWithinTheScreensBound) {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> normal;
+    std::uniform_int_distribution<int> exponent(-30, 30), zero(0, 4);
+    ModeFactor f;
+    double worstRounding = 0, worstSum = 0;
+    for (int c = 0; c < 2000; ++c) {
+        Eigen::Matrix<double, truck_equilibrium_detail::kCheckedQuantityCount, ModeFactor::N, Eigen::RowMajor> rows;
+        const double scale = std::pow(10.0, exponent(rng));
+        for (int q = 0; q < rows.rows(); ++q)
+            for (int j = 0; j < ModeFactor::N; ++j) rows(q, j) = zero(rng) == 0 ? 0.0 : scale * normal(rng);
+        f.setCheckRows(rows);
+        double b[16];
+        for (int j = 0; j < ModeFactor::N; ++j) b[j] = zero(rng) == 0 ? 0.0 : std::pow(10.0, exponent(rng) / 6) * normal(rng);
+        b[ModeFactor::N] = 0;
+        for (int q = 0; q < rows.rows(); ++q) {
+            const ModeFactor::ScreenRow& row = f.checkRows[size_t(q)];
+            ASSERT_EQ(row.h[ModeFactor::N], 0.0f);
+            long double kept = 0, keptAbs = 0, exact = 0;
+            for (int j = 0; j < ModeFactor::N; ++j) {
+                kept += (long double)row.h[size_t(j)] * b[j];
+                keptAbs += std::abs((long double)row.h[size_t(j)] * b[j]);
+                exact += (long double)rows(q, j) * b[j];
+            }
+            const double size = row.dotAbs(b);
+            EXPECT_NEAR(double(keptAbs), size, kScreenRelativeError * size);
+            if (size == 0) {
+                EXPECT_EQ(row.dot(b), 0.0);
+                continue;
+            }
+            worstSum = std::max(worstSum, double(std::abs(row.dot(b) - kept)) / (kScreenRelativeError * size));
+            worstRounding = std::max(worstRounding, double(std::abs(kept - exact)) / (kScreenRowRounding * size));
+        }
+    }
+    EXPECT_LE(worstSum, 1.0);
+    EXPECT_LE(worstRounding, 1.0);
+    EXPECT_GT(worstRounding, 0.3);  // the bound is near what rounding to nearest can reach
+    std::printf("screen rows: the sums' rounding %.3g, the rows' rounding %.3g of their bounds\n", worstSum,
+                worstRounding);
 }
