@@ -287,12 +287,21 @@ Eigen::Matrix<double, N, N> scaleSystem(const Eigen::Matrix<double, N, N>& A, Ei
     return As;
 }
 
-void factorSystem(const Eigen::Matrix<double, N, N>& A, ModeFactor& f) {
-    const FullPivotLu<N> lu(scaleSystem(A, f.rowScale));  // Eigen's FullPivLU, bit for bit
-    f.invertible = lu.isInvertible();
-    f.p = lu.getRowPermutation();
-    f.q = lu.getColumnPermutation();
-    f.compress(lu.getMatrixLU());
+/// The scaled system's factorization (Eigen's FullPivLU, bit for bit), before a
+/// ModeFactor keeps it (keepFactor) in the room it needs (ModeFactor::getBytes(factors)).
+struct ScaledLu {
+    Eigen::Matrix<double, N, 1> rowScale;
+    FullPivotLu<N> lu;
+    ModeFactor::Lu factors;  // lu's L and U, row by row
+    explicit ScaledLu(const Eigen::Matrix<double, N, N>& A) : lu(scaleSystem(A, rowScale)), factors(lu.getMatrixLU()) {}
+};
+
+void keepFactor(const ScaledLu& s, ModeFactor& f) {
+    f.rowScale = s.rowScale;
+    f.invertible = s.lu.isInvertible();
+    for (int i = 0; i < N; ++i)
+        f.p[i] = std::uint8_t(s.lu.getRowPermutation()[i]), f.q[i] = std::uint8_t(s.lu.getColumnPermutation()[i]);
+    f.compress(s.factors);
 }
 
 /// x from the factorization: b row-scaled, solved, unknowns unscaled.
@@ -508,10 +517,10 @@ TruckSolution solveTruckMode(const TruckGeometry& g, const TruckInputs& in, cons
     Eigen::Matrix<double, N, N> A;
     Eigen::Matrix<double, N, 1> b;
     assembleSystem(g, in, mode, k, P, A, b);
-    ModeFactor f;
-    factorSystem(A, f);
+    truck_equilibrium_detail::ModeFactorWithRoom room;
+    keepFactor(ScaledLu(A), room.factor);
     const SpringForces springs{{&P[0].row, &P[1].row}, {P[0].c, P[1].c}};
-    return solveFactored(g, in, mode, k, springs, f, b, substitution);
+    return solveFactored(g, in, mode, k, springs, room.factor, b, substitution);
 }
 
 namespace {
@@ -522,10 +531,11 @@ namespace {
 Eigen::Matrix<double, N, N, Eigen::RowMajor> calcInverse(const ModeFactor& f) {
     Eigen::Matrix<double, N, N, Eigen::RowMajor> c = Eigen::Matrix<double, N, N, Eigen::RowMajor>::Zero();
     for (int i = 0; i < N; ++i) c(f.p[i], i) = f.rowScale[i] > 0 ? 1 / f.rowScale[i] : 1.0;
+    const double* value = f.getValues();
     for (int i = 1; i < N; ++i)
-        for (int k = f.lowerStart[i]; k < f.lowerStart[i + 1]; ++k) c.row(i) -= f.value[k] * c.row(f.column[k]);
+        for (int k = f.lowerStart[i]; k < f.lowerStart[i + 1]; ++k) c.row(i) -= value[k] * c.row(f.column[k]);
     for (int i = N - 1; i >= 0; --i) {
-        for (int k = f.upperStart[i]; k < f.upperStart[i + 1]; ++k) c.row(i) -= f.value[k] * c.row(f.column[k]);
+        for (int k = f.upperStart[i]; k < f.upperStart[i + 1]; ++k) c.row(i) -= value[k] * c.row(f.column[k]);
         c.row(i) /= f.diagonal[i];
     }
     Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse;
@@ -557,6 +567,7 @@ Eigen::Matrix<double, 15, 15> calcScaledModeMatrix(const TruckGeometry& g, const
 // ---- TruckModeCache -------------------------------------------------------
 
 struct TruckModeCache::Factor : ModeFactor {};
+static_assert(sizeof(TruckModeCache::Factor) == sizeof(ModeFactor), "its values right after it, as ModeFactor's");
 
 struct TruckModeCache::SpringRows {
     std::array<std::array<Row, 3>, 2> row;  ///< [side][SpringSegment]
@@ -573,7 +584,8 @@ TruckModeCache::TruckModeCache(const TruckGeometry& g)
       arena_(std::make_unique<HugePageArena>()),
       slots_(arena_->makeArray<std::atomic<Factor*>>(kClassCount)),
       screenHints_(arena_->makeArray<std::atomic<std::int8_t>>(kModeCount)),
-      springRows_(arena_->make<SpringRows>(g)) {}
+      springRows_(arena_->make<SpringRows>(g)),
+      neighbourOrders_(arena_->makeArray<std::atomic<const NeighbourOrder*>>(kModeCount)) {}
 
 int TruckModeCache::getScreenHint(int modeIndex) const {
     return int(screenHints_[modeIndex].load(std::memory_order_relaxed)) - 1;
@@ -609,8 +621,11 @@ const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const Tru
     std::atomic<Factor*>& slot = slots_[getClassIndex(modeIndex)];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
-    Factor& made = *arena_->make<Factor>();  // a thread that loses the race below leaves its copy unused
-    factorSystem(assembleMatrix(geometry_, in, mode, k), made);
+    const ScaledLu lu(assembleMatrix(geometry_, in, mode, k));
+    // The factorization and its entries' values, in as much room as they take; a thread that
+    // loses the race below leaves its copy unused.
+    Factor& made = *new (arena_->allocate(ModeFactor::getBytes(lu.factors), alignof(Factor))) Factor;
+    keepFactor(lu, made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
         Eigen::Matrix<double, kCheckedCount, N, Eigen::RowMajor> rows;
@@ -1220,6 +1235,10 @@ bool visitNeighbours(const TruckMode& previous, Consider&& consider) {
     return false;
 }
 
+}  // namespace
+
+// Named, not anonymous: TruckModeCache::NeighbourOrder holds these.
+namespace truck_equilibrium_detail {
 /// A mode in 10 bytes, with its TruckModeCache::getIndex, for the search orders.
 struct PackedMode {
     std::uint8_t support, wheels, wedge0, wedge1, spring0, spring1, lateralWedge, gib;
@@ -1238,45 +1257,39 @@ struct PackedMode {
         return m;
     }
 };
+}  // namespace truck_equilibrium_detail
+using truck_equilibrium_detail::PackedMode;
 
-/// A list of modes kept in a HugePageArena.
-struct ModeOrder {
+/// A list of modes kept in TruckModeCache's arena.
+struct TruckModeCache::NeighbourOrder {
     const PackedMode* modes;
     std::size_t count;
     const PackedMode* begin() const { return modes; }
     const PackedMode* end() const { return modes + count; }
 };
 
-/// The neighbour part of the search order from `previous` (visitNeighbours) with each mode
-/// once, where it first comes, and without `previous`: the modes the first pass considers,
-/// in its order. It depends on `previous` alone, so each is made once per process, on first
-/// use, into huge pages (lock-free slots; test
-/// ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
-const ModeOrder& getNeighbourOrder(const TruckMode& previous) {
-    using Slot = std::atomic<const ModeOrder*>;
-    struct Orders {
-        HugePageArena arena;
-        Slot* slots = arena.makeArray<Slot>(TruckModeCache::kModeCount);
-    };
-    static Orders orders;
-    Slot& slot = orders.slots[TruckModeCache::getIndex(previous)];
-    if (const ModeOrder* order = slot.load(std::memory_order_acquire)) return *order;
+const TruckModeCache::NeighbourOrder& TruckModeCache::getNeighbourOrder(const TruckMode& previous) const {
+    std::atomic<const NeighbourOrder*>& slot = neighbourOrders_[getIndex(previous)];
+    if (const NeighbourOrder* order = slot.load(std::memory_order_acquire)) return *order;
     std::vector<PackedMode> list;
-    std::bitset<TruckModeCache::kModeCount> seen;
-    seen.set(size_t(TruckModeCache::getIndex(previous)));
+    std::bitset<kModeCount> seen;
+    seen.set(size_t(getIndex(previous)));
     visitNeighbours(previous, [&](const TruckMode& m) {
         const PackedMode packed = PackedMode::pack(m);
         if (!seen.test(packed.index)) seen.set(packed.index), list.push_back(packed);
         return false;
     });
-    PackedMode* modes = orders.arena.makeArray<PackedMode>(list.size());
-    std::copy(list.begin(), list.end(), modes);
-    const ModeOrder* made = orders.arena.make<ModeOrder>(modes, list.size());
-    const ModeOrder* expected = nullptr;
+    auto* modes = static_cast<PackedMode*>(
+        arena_->allocate(sizeof(PackedMode) * std::max<std::size_t>(1, list.size()), alignof(PackedMode)));
+    std::uninitialized_copy(list.begin(), list.end(), modes);
+    const NeighbourOrder* made =
+        new (arena_->allocate(sizeof(NeighbourOrder), alignof(NeighbourOrder))) NeighbourOrder{modes, list.size()};
+    const NeighbourOrder* expected = nullptr;
     if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel)) return *made;
     return *expected;  // another thread made the same order first (this copy stays unused in the arena)
 }
 
+namespace {
 /// The search order's first consistent mode, or false when no mode is consistent.
 /// Every mode of the order (the previous mode, its one-choice neighbours, their
 /// one-choice neighbours, every mode) is either consistent or not whatever came
@@ -1314,7 +1327,7 @@ bool findFirstConsistent(const SearchContext& context, const ChoiceBounds& bound
         found = solved;
         return true;
     };
-    const ModeOrder& neighbours = getNeighbourOrder(previous);
+    const TruckModeCache::NeighbourOrder& neighbours = context.cache.getNeighbourOrder(previous);
     for (const PackedMode& m : neighbours)
         if (test(m.unpack(), m.index)) return true;
     // The enumeration leaves out what the neighbour part considered.

@@ -209,6 +209,14 @@ public:
     /// "q ≥ 0" (the frictions, the compressions, the lateral deflection) is stored as −1.
     int getScreenHint(int modeIndex) const;
     void setScreenHint(int modeIndex, int quantity) const;
+    /// The neighbour part of the search order from `previous` (its one-choice neighbours,
+    /// then theirs) with each mode once, where it first comes, and without `previous`: the
+    /// modes the search's first pass considers, in its order. It depends on `previous`
+    /// alone; each is made on first use and kept here, in the arena that holds the
+    /// factorizations, so a run's search takes its memory from as few fresh blocks as it
+    /// can (lock-free slots; test ReducedModel.PrunedModeSearchIsBitIdenticalToTheExhaustiveSearch).
+    struct NeighbourOrder;
+    const NeighbourOrder& getNeighbourOrder(const TruckMode& previous) const;
 
 private:
     TruckGeometry geometry_;
@@ -220,6 +228,7 @@ private:
     std::atomic<Factor*>* slots_;  ///< kClassCount, by getClassIndex, in arena_; null until factored
     std::atomic<std::int8_t>* screenHints_;  ///< kModeCount, in arena_: the hint + 1 (0: none)
     const SpringRows* springRows_;  ///< in arena_
+    std::atomic<const NeighbourOrder*>* neighbourOrders_;  ///< kModeCount, by getIndex, in arena_; null until made
 };
 
 /// solveTruckMode with the cache's factorization (bit-identical).

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -22,15 +23,28 @@ inline constexpr int kCheckedQuantityCount = 18;
 /// the geometry only (the inputs enter b alone), so TruckModeCache keeps one per mode.
 ///
 /// Laid out for the search's memory traffic: what a screen reads first (invertible, then
-/// checkRows), then what a solve reads, then the factors' nonzero entries, of which only
-/// the used part is ever written. L and U themselves are not kept: getLu rebuilds them,
-/// bit for bit (the zeros' signs from a mask), for the rare paths that need every entry.
-/// A run meets about a thousand of these, in fresh memory (bench/README.md, "The search's
-/// memory").
-struct ModeFactor {
+/// checkRows), then what a solve reads. The values of the factors' nonzero entries follow
+/// the object itself, as many as the factors hold (getEntryCount; TruckModeCache's arena
+/// gives each factorization that much room, ModeFactorWithRoom room for all). L and U
+/// themselves are not kept: getLu rebuilds them, bit for bit (the zeros' signs from a
+/// mask), for the rare paths that need every entry. A run meets about a thousand of these,
+/// in fresh memory (bench/README.md, "The search's memory").
+struct alignas(64) ModeFactor {
     static constexpr int N = kUnknownCount;
+    /// The most nonzero entries off the diagonal: every one of L's and U's.
+    static constexpr int kMaxEntries = N * (N - 1);
     using Lu = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
+    ModeFactor() = default;
+    /// Not copyable: the entries' values live after the object (getValues).
+    ModeFactor(const ModeFactor&) = delete;
+    ModeFactor& operator=(const ModeFactor&) = delete;
+
     bool invertible = false;
+    /// The nonzero off-diagonal entries of L, then of U, row by row (about 40 of L's 105
+    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]) of
+    /// column and getValues().
+    std::array<std::uint8_t, N + 1> lowerStart, upperStart;
+    std::array<std::uint8_t, N> p, q;  ///< FullPivLU's row and column permutations
     /// One row of the screen's, h, in single precision (rounded to nearest; the screen's
     /// error bound covers the rounding: kScreenRowRounding in TruckEquilibrium.h), on one
     /// 64-byte line: N entries and a 0.
@@ -81,22 +95,28 @@ struct ModeFactor {
     }
     Eigen::Matrix<double, N, 1> rowScale;  ///< each scaled row's largest |coefficient| (0: row left as is)
     std::array<double, N> diagonal;        ///< U's diagonal
-    std::array<int, N> p, q;               ///< FullPivLU's row and column permutations
-    /// The nonzero off-diagonal entries of L, then of U, row by row (about 40 of L's 105
-    /// and 46 of U's 120 on the default car): row i's are [start[i], start[i + 1]) of
-    /// column and value.
-    std::array<std::uint8_t, N + 1> lowerStart, upperStart;
     std::array<std::uint64_t, (N * N + 63) / 64> negativeZero;  ///< bit i·N + j: L or U's entry (i, j) is −0
-    std::array<std::uint8_t, N * (N - 1)> column;
-    std::array<double, N * (N - 1)> value;
+    std::array<std::uint8_t, kMaxEntries> column;
 
-    /// Keeps lu's diagonal, its nonzero entries and the places of its −0s.
+    /// The values of the nonzero entries, right after the object.
+    const double* getValues() const { return reinterpret_cast<const double*>(this + 1); }
+    double* updValues() { return reinterpret_cast<double*>(this + 1); }
+    /// The nonzero entries lu holds off its diagonal: the values compress keeps.
+    static int getEntryCount(const Lu& lu) {
+        return int((lu.array() != 0).count() - (lu.diagonal().array() != 0).count());
+    }
+    /// The room a ModeFactor needs for lu's factors: the object and its values.
+    static std::size_t getBytes(const Lu& lu) { return sizeof(ModeFactor) + sizeof(double) * getEntryCount(lu); }
+
+    /// Keeps lu's diagonal, its nonzero entries and the places of its −0s; the object must
+    /// have room after it for getEntryCount(lu) values.
     void compress(const Lu& lu) {
         int n = 0;
+        double* value = updValues();
         negativeZero.fill(0);
         auto keep = [&](int i, int j) {
             const double v = lu(i, j);
-            if (v != 0) column[size_t(n)] = std::uint8_t(j), value[size_t(n++)] = v;
+            if (v != 0) column[size_t(n)] = std::uint8_t(j), value[n++] = v;
             else if (std::signbit(v)) negativeZero[size_t((i * N + j) / 64)] |= std::uint64_t(1) << ((i * N + j) % 64);
         };
         for (int i = 0; i < N; ++i) {
@@ -114,6 +134,7 @@ struct ModeFactor {
 
     /// L (below the diagonal) and U, as compress was given them, bit for bit.
     Lu getLu() const {
+        const double* value = getValues();
         Lu lu;
         for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
@@ -173,6 +194,7 @@ struct ModeFactor {
         bool negativeZero = false;
         for (int i = 0; i < N; ++i) negativeZero |= c[i] == 0 && std::signbit(c[i]);
         if (negativeZero) return solveChecked(b, colScale);
+        const double* value = getValues();
         for (int i = 1; i < N; ++i) {
             double v = c[i];
             for (int k = lowerStart[i]; k < lowerStart[i + 1]; ++k) v -= value[k] * c[column[k]];
@@ -208,6 +230,7 @@ private:
     Eigen::Matrix<double, N, 1> substituteRowByRow(const Eigen::Matrix<double, N, 1>& b,
                                                    const Eigen::Matrix<double, N, 1>& colScale, bool dense) const {
         const Lu lu = getLu();
+        const double* value = getValues();
         double c[N];
         loadRightHandSide(b, c);
         auto sum = [&](int i, int firstColumn, int endColumn, int firstEntry, int endEntry) {
@@ -225,5 +248,13 @@ private:
         return unloadSolution(c, colScale);
     }
 };
+
+/// A ModeFactor with room after it for every entry's value: a factorization kept outside
+/// TruckModeCache's arena.
+struct ModeFactorWithRoom {
+    ModeFactor factor;
+    std::array<double, ModeFactor::kMaxEntries> values;
+};
+static_assert(offsetof(ModeFactorWithRoom, values) == sizeof(ModeFactor), "the values right after the factor");
 }  // namespace truck_equilibrium_detail
 }  // namespace rockroll

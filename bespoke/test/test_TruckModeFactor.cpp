@@ -11,15 +11,16 @@
 
 using namespace rockroll;
 using truck_equilibrium_detail::ModeFactor;
+using truck_equilibrium_detail::ModeFactorWithRoom;
 
 namespace {
 using Vector = Eigen::Matrix<double, ModeFactor::N, 1>;
 
 /// A hand-made factorization: unit L and U with a few nonzero entries off the diagonal,
 /// permutations that reverse and rotate, and row scales of 1, 0 and 4.
-ModeFactor makeFactor() {
+void makeFactor(ModeFactorWithRoom& room) {
     constexpr int n = ModeFactor::N;
-    ModeFactor f;
+    ModeFactor& f = room.factor;
     ModeFactor::Lu lu = ModeFactor::Lu::Identity();
     lu(2, 0) = 0.5, lu(3, 2) = -0.25, lu(7, 1) = 2, lu(14, 9) = -3, lu(6, 5) = -0.0;  // L
     lu(0, 4) = 0.3, lu(5, 11) = -1.5, lu(9, 10) = 0.125, lu(1, 13) = -0.0;            // U
@@ -29,7 +30,6 @@ ModeFactor makeFactor() {
     f.rowScale[6] = 0, f.rowScale[8] = 4;
     f.invertible = true;
     f.compress(lu);
-    return f;
 }
 
 void expectSameBits(const Vector& a, const Vector& b, const char* what) {
@@ -53,7 +53,8 @@ TEST(TruckModeFactor, KeepsTheFactorsBitForBit) {
             const int k = kind(rng);
             lu(i, j) = k == 0 ? 0.0 : k == 1 ? -0.0 : normal(rng);
         }
-    ModeFactor f;
+    ModeFactorWithRoom room;
+    ModeFactor& f = room.factor;
     f.compress(lu);
     const ModeFactor::Lu back = f.getLu();
     EXPECT_EQ(std::memcmp(back.data(), lu.data(), sizeof(double) * ModeFactor::N * ModeFactor::N), 0);
@@ -61,11 +62,31 @@ TEST(TruckModeFactor, KeepsTheFactorsBitForBit) {
     for (int i = 0; i < ModeFactor::N; ++i)
         for (int j = 0; j < ModeFactor::N; ++j) kept += i != j && lu(i, j) != 0 ? 1 : 0;
     EXPECT_EQ(int(f.upperStart[ModeFactor::N]), kept);
+    EXPECT_EQ(ModeFactor::getEntryCount(lu), kept);
+    EXPECT_EQ(ModeFactor::getBytes(lu), sizeof(ModeFactor) + sizeof(double) * size_t(kept));
+}
+
+// A factorization needs room for its nonzero entries alone: compress writes no value
+// beyond getEntryCount's (the room after them keeps a marker), and the solve reads none.
+TEST(TruckModeFactor, KeepsOnlyTheEntriesItCounts) {
+    ModeFactorWithRoom room;
+    makeFactor(room);
+    ModeFactor::Lu lu = room.factor.getLu();
+    const int n = ModeFactor::getEntryCount(lu);
+    ASSERT_EQ(n, 7);  // makeFactor's nonzero entries off the diagonal
+    ModeFactorWithRoom again;
+    const double marker = 12345.0;
+    again.values.fill(marker);
+    again.factor.compress(lu);
+    for (int k = n; k < ModeFactor::kMaxEntries; ++k) ASSERT_EQ(again.values[size_t(k)], marker) << k;
+    EXPECT_EQ(std::memcmp(again.factor.getLu().data(), lu.data(), sizeof lu), 0);
 }
 
 // The sparse substitution equals the dense one, bit for bit, on finite right-hand sides.
 TEST(TruckModeFactor, SparseSolveEqualsTheDenseOne) {
-    const ModeFactor f = makeFactor();
+    ModeFactorWithRoom room;
+    makeFactor(room);
+    const ModeFactor& f = room.factor;
     const Vector colScale = Vector::LinSpaced(1e-3, 1e4);
     std::mt19937 rng(7);
     std::normal_distribution<double> normal;
@@ -80,7 +101,9 @@ TEST(TruckModeFactor, SparseSolveEqualsTheDenseOne) {
 // −0 − 0·(−1) is +0, the sparse sum alone stays −0. solve takes the per-row path when the
 // scaled b holds a −0 (ModeFactor::solve), and gives the dense loop's +0.
 TEST(TruckModeFactor, NegativeZeroInTheRightHandSideGivesTheDenseLoopsZero) {
-    const ModeFactor f = makeFactor();
+    ModeFactorWithRoom room;
+    makeFactor(room);
+    const ModeFactor& f = room.factor;
     const Vector colScale = Vector::Ones();
     Vector b = Vector::Zero();
     b[14] = -1;    // c[0] (p reverses the rows)
@@ -94,7 +117,9 @@ TEST(TruckModeFactor, NegativeZeroInTheRightHandSideGivesTheDenseLoopsZero) {
 // A right-hand side that is not finite: solve gives what the per-row tests give (the
 // dense loop's sum for each row that is not finite), not the sparse sums' values.
 TEST(TruckModeFactor, NonFiniteRightHandSideTakesThePerRowPath) {
-    const ModeFactor f = makeFactor();
+    ModeFactorWithRoom room;
+    makeFactor(room);
+    const ModeFactor& f = room.factor;
     const Vector colScale = Vector::Ones();
     const double inf = std::numeric_limits<double>::infinity();
     for (double v : {inf, -inf, std::numeric_limits<double>::quiet_NaN()}) {
@@ -115,7 +140,8 @@ TEST(TruckModeFactor, ScreenRowsRoundWithinTheScreensBound) {
     std::mt19937 rng(11);
     std::normal_distribution<double> normal;
     std::uniform_int_distribution<int> exponent(-30, 30), zero(0, 4);
-    ModeFactor f;
+    ModeFactorWithRoom room;
+    ModeFactor& f = room.factor;
     double worstRounding = 0, worstSum = 0;
     for (int c = 0; c < 2000; ++c) {
         Eigen::Matrix<double, truck_equilibrium_detail::kCheckedQuantityCount, ModeFactor::N, Eigen::RowMajor> rows;
