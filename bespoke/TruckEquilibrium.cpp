@@ -288,12 +288,11 @@ Eigen::Matrix<double, N, N> scaleSystem(const Eigen::Matrix<double, N, N>& A, Ei
 }
 
 /// The scaled system's factorization (Eigen's FullPivLU, bit for bit), before a
-/// ModeFactor keeps it (keepFactor) in the room it needs (ModeFactor::getBytes(factors)).
+/// ModeFactor keeps it (keepFactor) in the room it needs (ModeFactor::getBytes(lu.getMatrixLU())).
 struct ScaledLu {
     Eigen::Matrix<double, N, 1> rowScale;
     FullPivotLu<N> lu;
-    ModeFactor::Lu factors;  // lu's L and U, row by row
-    explicit ScaledLu(const Eigen::Matrix<double, N, N>& A) : lu(scaleSystem(A, rowScale)), factors(lu.getMatrixLU()) {}
+    explicit ScaledLu(const Eigen::Matrix<double, N, N>& A) : lu(scaleSystem(A, rowScale)) {}
 };
 
 void keepFactor(const ScaledLu& s, ModeFactor& f) {
@@ -301,7 +300,7 @@ void keepFactor(const ScaledLu& s, ModeFactor& f) {
     f.invertible = s.lu.isInvertible();
     for (int i = 0; i < N; ++i)
         f.p[i] = std::uint8_t(s.lu.getRowPermutation()[i]), f.q[i] = std::uint8_t(s.lu.getColumnPermutation()[i]);
-    f.compress(s.factors);
+    f.compress(s.lu.getMatrixLU());
 }
 
 /// x from the factorization: b row-scaled, solved, unknowns unscaled.
@@ -463,7 +462,6 @@ TruckSolution solveFactored(const TruckGeometry& g, const TruckInputs& in, const
     return sol;
 }
 
-
 }  // namespace
 
 std::string TruckMode::describe() const {
@@ -615,17 +613,16 @@ std::shared_ptr<const TruckModeCache> TruckModeCache::getShared(const TruckGeome
 
 TruckModeCache::~TruckModeCache() = default;  // the factorizations are trivially destructible, in arena_
 
-
 const TruckModeCache::Factor& TruckModeCache::getFactor(int modeIndex, const TruckMode& mode,
                                                         const TruckInputs& in) const {
     std::atomic<Factor*>& slot = slots_[getClassIndex(modeIndex)];
     if (const Factor* f = slot.load(std::memory_order_acquire)) return *f;
     const Kinematics k = makeKinematics(geometry_, in);  // its rows, not its constants, reach A and the screen
-    const ScaledLu lu(assembleMatrix(geometry_, in, mode, k));
+    const ScaledLu scaled(assembleMatrix(geometry_, in, mode, k));
     // The factorization and its entries' values, in as much room as they take; a thread that
     // loses the race below leaves its copy unused.
-    Factor& made = *new (arena_->allocate(ModeFactor::getBytes(lu.factors), alignof(Factor))) Factor;
-    keepFactor(lu, made);
+    Factor& made = *new (arena_->allocate(ModeFactor::getBytes(scaled.lu.getMatrixLU()), alignof(Factor))) Factor;
+    keepFactor(scaled, made);
     if (made.invertible) {
         const Eigen::Matrix<double, N, N, Eigen::RowMajor> inverse = calcInverse(made);
         Eigen::Matrix<double, kCheckedCount, N, Eigen::RowMajor> rows;

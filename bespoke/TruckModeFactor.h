@@ -101,16 +101,22 @@ struct alignas(64) ModeFactor {
     /// The values of the nonzero entries, right after the object.
     const double* getValues() const { return reinterpret_cast<const double*>(this + 1); }
     double* updValues() { return reinterpret_cast<double*>(this + 1); }
-    /// The nonzero entries lu holds off its diagonal: the values compress keeps.
-    static int getEntryCount(const Lu& lu) {
+    /// The nonzero entries lu (L and U, N × N, either storage order) holds off its
+    /// diagonal: the values compress keeps.
+    template <class Matrix>
+    static int getEntryCount(const Matrix& lu) {
         return int((lu.array() != 0).count() - (lu.diagonal().array() != 0).count());
     }
     /// The room a ModeFactor needs for lu's factors: the object and its values.
-    static std::size_t getBytes(const Lu& lu) { return sizeof(ModeFactor) + sizeof(double) * getEntryCount(lu); }
+    template <class Matrix>
+    static std::size_t getBytes(const Matrix& lu) {
+        return sizeof(ModeFactor) + sizeof(double) * getEntryCount(lu);
+    }
 
     /// Keeps lu's diagonal, its nonzero entries and the places of its −0s; the object must
     /// have room after it for getEntryCount(lu) values.
-    void compress(const Lu& lu) {
+    template <class Matrix>
+    void compress(const Matrix& lu) {
         int n = 0;
         double* value = updValues();
         negativeZero.fill(0);
